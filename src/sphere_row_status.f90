@@ -1,0 +1,46 @@
+!> Outcome codes of a run and of input checks, shared by every precision.
+!>
+!> The library reports through these codes and a message; it never stops the
+!> program. Only programs decide to stop.
+module sphere_row_status
+    implicit none
+    private
+    public :: status_normal, status_collapsed, status_max_collisions, status_invalid
+    public :: event_start, event_collision, event_collapse
+    public :: status_word
+
+    !> The run ended by the definition's criterion: no gap is closing any more.
+    integer, parameter :: status_normal = 0
+    !> The run ended, and on the way at least one contiguous group of spheres
+    !> underwent inelastic collapse (infinitely many collisions in finite time),
+    !> whose limit was taken: the quasi-plastic case.
+    integer, parameter :: status_collapsed = 1
+    !> The safety net `max_collisions` was reached before the end: the state
+    !> returned is the one after the last collision computed.
+    integer, parameter :: status_max_collisions = 2
+    !> The scene was refused; the message names the parameter at fault.
+    integer, parameter :: status_invalid = 3
+
+    !> Event kinds of the optional event record.
+    integer, parameter :: event_start = 0, event_collision = 1, event_collapse = 2
+
+contains
+
+    !> The word printed for a status code.
+    pure function status_word(status) result(word)
+        integer, intent(in) :: status
+        character(len=:), allocatable :: word
+        select case (status)
+        case (status_normal)
+            word = "normal"
+        case (status_collapsed)
+            word = "quasi_plastic"
+        case (status_max_collisions)
+            word = "max_collisions"
+        case (status_invalid)
+            word = "invalid"
+        case default
+            word = "unknown"
+        end select
+    end function status_word
+end module sphere_row_status
