@@ -74,7 +74,7 @@ contains
     subroutine fail(text)
         character(len=*), intent(in) :: text
         write (error_unit, "(a)") name//": "//trim(text)
-        error stop 2, quiet=.true.
+        stop 2, quiet=.true.
     end subroutine fail
 
     !> The event record as TSV, one header row naming each column and its unit

@@ -1,20 +1,78 @@
-!> Umbrella module: the public API of the package, in the working precision.
+!> Umbrella module: the public API of the package.
 !>
-!> The engine in real128 is exported here. The same engine in other kinds,
-!> for precision studies, is used from its own module (sphere_row_engine_sp,
-!> _dp, _xdp), whose names are the same as these.
+!> The engine in real128, the working precision, is exported under its plain
+!> type names (scene_t, run_t, event_log_t); the same engine in the other kinds
+!> under suffixed names (scene_dp_t, ...). The procedures are generic over all
+!> four kinds.
 module sphere_row
     use sphere_row_kinds, only: sp, dp, xdp, qp
     use sphere_row_status, only: status_normal, status_collapsed, status_max_collisions, &
         status_invalid, event_start, event_collision, event_collapse, status_word
     use sphere_row_format, only: real_str
-    use sphere_row_engine_qp, only: scene_t, run_t, event_log_t, scene_init, scene_check, &
-        simulate, gaps_at, kinetic_energy, momentum, str
+    use sphere_row_engine_qp, only: scene_t, run_t, &
+        event_log_t, scene_init_qp => scene_init_wp, &
+        scene_check_qp => scene_check_wp, simulate_qp => simulate_wp, &
+        gaps_at_qp => gaps_at_wp, kinetic_energy_qp => kinetic_energy_wp, &
+        momentum_qp => momentum_wp, str_qp => str_wp
+    use sphere_row_engine_xdp, only: scene_xdp_t => scene_t, run_xdp_t => run_t, &
+        event_log_xdp_t => event_log_t, scene_init_xdp => scene_init_wp, &
+        scene_check_xdp => scene_check_wp, simulate_xdp => simulate_wp, &
+        gaps_at_xdp => gaps_at_wp, kinetic_energy_xdp => kinetic_energy_wp, &
+        momentum_xdp => momentum_wp, str_xdp => str_wp
+    use sphere_row_engine_dp, only: scene_dp_t => scene_t, run_dp_t => run_t, &
+        event_log_dp_t => event_log_t, scene_init_dp => scene_init_wp, &
+        scene_check_dp => scene_check_wp, simulate_dp => simulate_wp, &
+        gaps_at_dp => gaps_at_wp, kinetic_energy_dp => kinetic_energy_wp, &
+        momentum_dp => momentum_wp, str_dp => str_wp
+    use sphere_row_engine_sp, only: scene_sp_t => scene_t, run_sp_t => run_t, &
+        event_log_sp_t => event_log_t, scene_init_sp => scene_init_wp, &
+        scene_check_sp => scene_check_wp, simulate_sp => simulate_wp, &
+        gaps_at_sp => gaps_at_wp, kinetic_energy_sp => kinetic_energy_wp, &
+        momentum_sp => momentum_wp, str_sp => str_wp
     implicit none
     private
     public :: sp, dp, xdp, qp
     public :: status_normal, status_collapsed, status_max_collisions, status_invalid
     public :: event_start, event_collision, event_collapse, status_word, real_str
     public :: scene_t, run_t, event_log_t
+    public :: scene_xdp_t, run_xdp_t, event_log_xdp_t
+    public :: scene_dp_t, run_dp_t, event_log_dp_t
+    public :: scene_sp_t, run_sp_t, event_log_sp_t
     public :: scene_init, scene_check, simulate, gaps_at, kinetic_energy, momentum, str
+
+    !> Build and check a scene (see scene_init_wp in sphere_row_engine.inc).
+    interface scene_init
+        module procedure scene_init_qp, scene_init_xdp, scene_init_dp, scene_init_sp
+    end interface scene_init
+
+    !> Check every parameter of a scene.
+    interface scene_check
+        module procedure scene_check_qp, scene_check_xdp, scene_check_dp, scene_check_sp
+    end interface scene_check
+
+    !> Run a scene to its end.
+    interface simulate
+        module procedure simulate_qp, simulate_xdp, simulate_dp, simulate_sp
+    end interface simulate
+
+    !> Gaps at a given time from an event log.
+    interface gaps_at
+        module procedure gaps_at_qp, gaps_at_xdp, gaps_at_dp, gaps_at_sp
+    end interface gaps_at
+
+    !> Total kinetic energy of velocities v.
+    interface kinetic_energy
+        module procedure kinetic_energy_qp, kinetic_energy_xdp, kinetic_energy_dp, kinetic_energy_sp
+    end interface kinetic_energy
+
+    !> Total momentum of velocities v.
+    interface momentum
+        module procedure momentum_qp, momentum_xdp, momentum_dp, momentum_sp
+    end interface momentum
+
+    !> Text form of a real with every significant digit of its kind.
+    interface str
+        module procedure str_qp, str_xdp, str_dp, str_sp
+    end interface str
+
 end module sphere_row

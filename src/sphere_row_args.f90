@@ -8,7 +8,7 @@
 module sphere_row_args
     use sphere_row_kinds, only: qp
     use sphere_row_status, only: status_normal, status_invalid
-    use sphere_row_engine_qp, only: scene_t, scene_init
+    use sphere_row, only: scene_t, scene_init
     implicit none
     private
     public :: get_args, split_key_value, parse_real, parse_int, parse_reals, parse_flag
