@@ -1,0 +1,121 @@
+# ARGESIM Comparison 12 — build, test and the reproducible study.
+#
+#   make test            fpm test (installs missing prerequisites first)
+#   make study           every task's tables, figures and results/summary.md
+#   make check-results   regenerate the study elsewhere and compare with results/
+#   make help            this list
+#
+# Programs -> tables -> figures: each table is made by its study program, each
+# figure by its gnuplot script from its tables; a second `make study` with
+# nothing changed does nothing.
+
+SHELL := /bin/bash
+.DELETE_ON_ERROR:
+.SUFFIXES:
+
+FPM ?= fpm
+RESULTS ?= results
+BUILD_STAMP := build/.release-stamp
+INC_STAMP := build/.inc-stamp
+BIN := build/release/bin
+SOURCES := $(wildcard src/*.f90 src/*.inc study/*.f90 app/*.f90) fpm.toml
+
+# tables of each study program (grouped: one run writes them all)
+A1 := $(RESULTS)/a1_paths.tsv $(RESULTS)/a1_answers.tsv
+A2 := $(RESULTS)/a2_velocities.tsv $(RESULTS)/a2_answers.tsv
+B1 := $(RESULTS)/b1_scan.tsv $(RESULTS)/b1_intervals.tsv $(RESULTS)/b1_critical.tsv \
+      $(RESULTS)/b1_answers.tsv
+B2 := $(RESULTS)/b2_velocities.tsv $(RESULTS)/b2_closed_forms.tsv $(RESULTS)/b2_answers.tsv
+C1 := $(RESULTS)/c1_iterations.tsv $(RESULTS)/c1_starts.tsv $(RESULTS)/c1_answers.tsv
+C2 := $(RESULTS)/c2_ecdf.tsv $(RESULTS)/c2_histogram.tsv $(RESULTS)/c2_convergence.tsv \
+      $(RESULTS)/c2_answers.tsv
+TABLES := $(A1) $(A2) $(B1) $(B2) $(C1) $(C2)
+ANSWERS := $(filter %_answers.tsv,$(TABLES))
+
+FIGURES := a1_paths b1_n b1_critical b2_velocities c1_secant c2_ecdf c2_histogram \
+           c2_convergence
+PNG := $(FIGURES:%=$(RESULTS)/%.png)
+SVG := $(FIGURES:%=$(RESULTS)/%.svg)
+
+.PHONY: all help prereqs test study tables figures bench check-results clean
+
+all: study
+
+help: ## list the targets
+	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | sed -E 's/:.*## /\t/' | expand -t 18
+
+prereqs: ## install missing gfortran, GSL, gnuplot, fpm (Debian, root) or say how
+	@bash .ci/prereqs
+
+test: prereqs $(INC_STAMP) ## run the test suite (fpm test)
+	$(FPM) test
+
+study: prereqs ## tables, figures, answers.tsv, bench.tsv and summary.md in results/
+	@$(MAKE) --no-print-directory $(RESULTS)/summary.md $(PNG) $(SVG) $(RESULTS)/bench.tsv
+
+tables: $(TABLES) ## the study's tables only
+
+figures: $(PNG) $(SVG) ## the study's figures only
+
+bench: $(RESULTS)/bench.tsv ## speed of the engine per precision and of the study
+
+# fpm does not see edits of the engine template: drop the four instantiations.
+$(INC_STAMP): $(wildcard src/*.inc)
+	@mkdir -p build
+	rm -f build/gfortran_*/sphere_row/src_sphere_row_engine_*
+	@touch $@
+
+$(BUILD_STAMP): $(SOURCES) $(INC_STAMP)
+	$(FPM) install --profile release --prefix $(abspath build/release)
+	@touch $@
+
+# run one study program, keeping its wall time apart from the tables
+define study_run
+	@mkdir -p $(RESULTS)/timing
+	@start=$$(date +%s.%N); $(BIN)/$(1) out=$(RESULTS) $(2); \
+	end=$$(date +%s.%N); \
+	awk -v s=$$start -v e=$$end -v p=$(1) 'BEGIN { printf "%s\t%.3f\n", p, e - s }' \
+		> $(RESULTS)/timing/$(1).tsv
+endef
+
+$(A1) &: $(BUILD_STAMP)
+	$(call study_run,c12-a1)
+$(A2) &: $(BUILD_STAMP)
+	$(call study_run,c12-a2)
+$(B1) &: $(BUILD_STAMP)
+	$(call study_run,c12-b1)
+$(B2) &: $(BUILD_STAMP)
+	$(call study_run,c12-b2)
+$(C1) &: $(BUILD_STAMP)
+	$(call study_run,c12-c1)
+$(C2) &: $(BUILD_STAMP)
+	$(call study_run,c12-c2)
+
+$(RESULTS)/answers.tsv $(RESULTS)/summary.md &: $(ANSWERS) $(BUILD_STAMP)
+	$(BIN)/c12-summary out=$(RESULTS)
+
+$(RESULTS)/bench.tsv: $(BUILD_STAMP) $(TABLES)
+	$(BIN)/c12-bench out=$(RESULTS)
+
+# figures: the script is a prerequisite of its figure
+$(RESULTS)/%.png: study/%.gp
+	gnuplot -e "dir='$(RESULTS)'; term='png'; out='$@'" $<
+$(RESULTS)/%.svg: study/%.gp
+	gnuplot -e "dir='$(RESULTS)'; term='svg'; out='$@'" $<
+
+$(RESULTS)/a1_paths.png $(RESULTS)/a1_paths.svg: $(A1)
+$(RESULTS)/b1_n.png $(RESULTS)/b1_n.svg: $(B1)
+$(RESULTS)/b1_critical.png $(RESULTS)/b1_critical.svg: $(B1)
+$(RESULTS)/b2_velocities.png $(RESULTS)/b2_velocities.svg: $(B2)
+$(RESULTS)/c1_secant.png $(RESULTS)/c1_secant.svg: $(C1)
+$(RESULTS)/c2_ecdf.png $(RESULTS)/c2_ecdf.svg: $(C2)
+$(RESULTS)/c2_histogram.png $(RESULTS)/c2_histogram.svg: $(C2)
+$(RESULTS)/c2_convergence.png $(RESULTS)/c2_convergence.svg: $(C2)
+
+check-results: prereqs ## regenerate the tables in build/ and compare with results/
+	rm -rf build/check
+	$(MAKE) --no-print-directory RESULTS=build/check tables build/check/answers.tsv
+	$(BIN)/tsv-compare committed=$(RESULTS) fresh=build/check
+
+clean: ## remove the build directory (results/ stays: it is committed)
+	rm -rf build
