@@ -5,6 +5,7 @@ program sphere_row_main
         status_normal, status_collapsed, event_collision, event_collapse
     use sphere_row_args, only: get_args, scene_from_args, split_key_value, parse_flag, &
         unused_arg, scene_help, wants_help
+    use sphere_row_output, only: itoa
     implicit none
     character(len=*), parameter :: name = "sphere-row"
     character(len=*), parameter :: own_keys = "events"
@@ -127,13 +128,5 @@ contains
             "", &
             "Bad input: one line on stderr naming the key, exit status 2."
     end subroutine usage
-
-    pure function itoa(i) result(s)
-        integer, intent(in) :: i
-        character(len=:), allocatable :: s
-        character(len=16) :: buf
-        write (buf, "(i0)") i
-        s = trim(buf)
-    end function itoa
 
 end program sphere_row_main

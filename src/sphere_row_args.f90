@@ -12,7 +12,7 @@ module sphere_row_args
     implicit none
     private
     public :: get_args, split_key_value, parse_real, parse_int, parse_reals, parse_flag
-    public :: scene_from_args, scene_help, unused_arg, wants_help
+    public :: scene_from_args, scene_help, unused_arg, wants_help, take_key
 
     !> Longest `masses` or `gaps` list a namelist file may hold.
     integer, parameter :: max_list = 100000
@@ -321,6 +321,28 @@ contains
         end function last_set
 
     end subroutine scene_from_args
+
+    !> The value of the last `key=value` argument among those not yet used;
+    !> `found` tells whether there was one, and it is marked used.
+    pure subroutine take_key(args, used, key, value, found)
+        character(len=*), intent(in) :: args(:)
+        logical, intent(inout) :: used(:)
+        character(len=*), intent(in) :: key
+        character(len=:), allocatable, intent(out) :: value
+        logical, intent(out) :: found
+        integer :: i, j
+        found = .false.
+        value = ""
+        do i = 1, size(args)
+            if (used(i)) cycle
+            j = index(args(i), "=")
+            if (j <= 1) cycle
+            if (trim(adjustl(args(i)(:j - 1))) /= key) cycle
+            value = trim(adjustl(args(i)(j + 1:)))
+            used(i) = .true.
+            found = .true.
+        end do
+    end subroutine take_key
 
     !> Message for the first argument that no key of the program took.
     pure subroutine unused_arg(args, used, allowed, stat, msg)

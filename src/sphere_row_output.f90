@@ -1,0 +1,58 @@
+!> Output of the study programs: TSV tables with one header row, and the
+!> per-task answer tables that results/answers.tsv and the summary are made of.
+module sphere_row_output
+    use sphere_row_status, only: status_normal, status_invalid
+    implicit none
+    private
+    public :: open_table, write_answer, answer_header, tab, itoa
+
+    !> The field separator.
+    character(len=*), parameter :: tab = achar(9)
+    !> Header of every `<task>_answers.tsv`: the answer, an independent
+    !> cross-check of it (a closed form, another method) and how both were made.
+    character(len=*), parameter :: answer_header = "key"//tab//"value"//tab//"check"//tab &
+        //"check_value"//tab//"difference"//tab//"how"
+
+contains
+
+    !> Create directory `dir` if needed and open `dir/name` for writing, with
+    !> `header` as its first line. `stat` is status_invalid (and `msg` says
+    !> why) if that is impossible.
+    subroutine open_table(dir, name, header, unit, stat, msg)
+        character(len=*), intent(in) :: dir, name, header
+        integer, intent(out) :: unit, stat
+        character(len=*), intent(out) :: msg
+        integer :: ios
+        character(len=200) :: iomsg
+        call execute_command_line("mkdir -p '"//dir//"'", exitstat=ios)
+        stat = status_invalid
+        open (newunit=unit, file=dir//"/"//name, status="replace", action="write", &
+            iostat=ios, iomsg=iomsg)
+        if (ios /= 0) then
+            msg = "out = "//dir//": cannot write "//name//" ("//trim(iomsg)//")"
+            return
+        end if
+        write (unit, "(a)") header
+        stat = status_normal
+        msg = ""
+    end subroutine open_table
+
+    !> One row of an answer table; numbers come already as text with all
+    !> their digits, '-' where there is no cross-check.
+    subroutine write_answer(unit, key, value, check, check_value, difference, how)
+        integer, intent(in) :: unit
+        character(len=*), intent(in) :: key, value, check, check_value, difference, how
+        write (unit, "(a)") key//tab//value//tab//check//tab//check_value//tab//difference &
+            //tab//how
+    end subroutine write_answer
+
+    !> Text of an integer.
+    pure function itoa(i) result(s)
+        integer, intent(in) :: i
+        character(len=:), allocatable :: s
+        character(len=24) :: buf
+        write (buf, "(i0)") i
+        s = trim(buf)
+    end function itoa
+
+end module sphere_row_output
