@@ -52,7 +52,7 @@ contains
         text = ""
         if (size(pairs) == 0) return
         if (maxval(pairs) <= 9) then
-            allocate (character(len=size(pairs)) :: text)
+            text = repeat(" ", size(pairs))
             do j = 1, size(pairs)
                 text(j:j) = achar(iachar("0") + pairs(j))
             end do

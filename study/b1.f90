@@ -1,0 +1,341 @@
+!> C12 task b1: number of collisions n(e) from e = 1 down into the
+!> quasi-plastic regime, its intervals of constant n and sequence, and the
+!> critical restitution below which the collisions never end.
+program c12_b1
+    use, intrinsic :: iso_fortran_env, only: error_unit
+    use sphere_row, only: qp, scene_t, run_t, event_log_t, simulate, str, status_word, &
+        status_normal, status_collapsed
+    use sphere_row_args, only: get_args, scene_from_args, take_key, parse_real, parse_int, &
+        unused_arg, wants_help, scene_help
+    use sphere_row_output, only: open_table, write_answer, answer_header, tab, itoa
+    use sphere_row_analysis, only: sequence_of, sequence_text, sequence_hash, tail_period, &
+        critical_restitution
+    implicit none
+    character(len=*), parameter :: name = "c12-b1"
+    !> Class of a run with a collapse: its count depends on tol, not on e alone.
+    integer(8), parameter :: collapsed_class = 0_8
+    character(len=:), allocatable :: args(:), text, out
+    character(len=300) :: msg
+    logical, allocatable :: used(:)
+    logical :: found
+    type(scene_t) :: scene
+    type(run_t) :: run
+    type(event_log_t) :: events
+    integer, allocatable :: pairs(:), cycle(:)
+    integer :: stat, unit, j, n_scan, n_bisect_max, n_delta, n_boundaries, period, k
+    integer :: n_intervals, n_fit, iterations, stat_c
+    real(qp) :: resolution, tol_fine, e_lo, e_hi, e_c, e_c_sim, closed, lo, hi, mid
+    real(qp) :: sx, sy, sxx, sxy, slope, intercept, delta, e_quasi
+    real(qp), allocatable :: e_scan(:), boundaries(:), deltas(:)
+    integer, allocatable :: n_scan_runs(:), status_scan(:), n_delta_runs(:), status_delta(:)
+    integer(8), allocatable :: class_scan(:)
+    integer(8) :: class_lo, class_hi
+
+    call get_args(args)
+    if (wants_help(args)) then
+        call usage()
+        stop
+    end if
+    allocate (used(size(args)))
+    call scene_from_args(args, scene, used, stat, msg)
+    if (stat /= status_normal) call fail(msg)
+    out = "results"
+    call take_key(args, used, "out", text, found)
+    if (found) out = text
+    n_scan = 2001
+    call take_key(args, used, "n_scan", text, found)
+    if (found) then
+        call parse_int("n_scan", text, n_scan, stat, msg)
+        if (stat /= status_normal) call fail(msg)
+        if (n_scan < 3) call fail("n_scan = "//text//": allowed n_scan >= 3")
+    end if
+    resolution = 1.0e-12_qp
+    call take_key(args, used, "resolution", text, found)
+    if (found) then
+        call parse_real("resolution", text, resolution, stat, msg)
+        if (stat /= status_normal) call fail(msg)
+        if (.not. (resolution > 1.0e-30_qp .and. resolution < 0.1_qp)) &
+            call fail("resolution = "//text//": allowed 1e-30 < resolution < 0.1")
+    end if
+    n_bisect_max = 300
+    call take_key(args, used, "n_bisect_max", text, found)
+    if (found) then
+        call parse_int("n_bisect_max", text, n_bisect_max, stat, msg)
+        if (stat /= status_normal) call fail(msg)
+        if (n_bisect_max < 1) call fail("n_bisect_max = "//text//": allowed n_bisect_max >= 1")
+    end if
+    tol_fine = 1.0e-4000_qp
+    call take_key(args, used, "tol_fine", text, found)
+    if (found) then
+        call parse_real("tol_fine", text, tol_fine, stat, msg)
+        if (stat /= status_normal) call fail(msg)
+        if (.not. (tol_fine > 1.0e-4900_qp .and. tol_fine < 1)) &
+            call fail("tol_fine = "//text//": allowed 1e-4900 < tol_fine < 1")
+    end if
+    call unused_arg(args, used, "out, n_scan, resolution, n_bisect_max, tol_fine and the "// &
+        "scene keys (see --help)", stat, msg)
+    if (stat /= status_normal) call fail(msg)
+
+    ! 1. dense scan of e from 1 down to 0 with the scene's own tolerance
+    allocate (e_scan(n_scan), n_scan_runs(n_scan), status_scan(n_scan), class_scan(n_scan))
+    do j = 1, n_scan
+        e_scan(j) = 1.0_qp - real(j - 1, qp)/real(n_scan - 1, qp)
+        call classify(e_scan(j), class_scan(j))
+        n_scan_runs(j) = run%n
+        status_scan(j) = run%status
+    end do
+
+    ! 2. every change of (n, sequence) between neighbours, bisected to `resolution`
+    allocate (boundaries(0))
+    do j = 1, n_scan - 1
+        if (class_scan(j) == class_scan(j + 1)) cycle
+        if (min(n_scan_runs(j), n_scan_runs(j + 1)) > n_bisect_max) cycle
+        call bisect(e_scan(j + 1), e_scan(j), class_scan(j + 1), class_scan(j), 0)
+    end do
+    n_boundaries = size(boundaries)
+    call sort(boundaries)
+
+    call open_table(out, "b1_scan.tsv", "e"//tab//"collisions"//tab//"status"//tab// &
+        "sequence_hash", unit, stat, msg)
+    if (stat /= status_normal) call fail(msg)
+    do j = 1, n_scan
+        write (unit, "(a)") str(e_scan(j))//tab//itoa(n_scan_runs(j))//tab// &
+            status_word(status_scan(j))//tab//i8toa(class_scan(j))
+    end do
+    close (unit)
+
+    ! intervals between consecutive boundaries, each with its sequence
+    call open_table(out, "b1_intervals.tsv", "e_low"//tab//"e_high"//tab//"width"//tab// &
+        "collisions"//tab//"status"//tab//"sequence", unit, stat, msg)
+    if (stat /= status_normal) call fail(msg)
+    n_intervals = 0
+    e_quasi = -1.0_qp
+    do j = 0, n_boundaries
+        if (j == 0) then
+            lo = 0.0_qp
+        else
+            lo = boundaries(j)
+        end if
+        if (j == n_boundaries) then
+            hi = 1.0_qp
+        else
+            hi = boundaries(j + 1)
+        end if
+        mid = 0.5_qp*(lo + hi)
+        call classify(mid, class_lo)
+        if (run%status == status_collapsed) then
+            e_quasi = max(e_quasi, hi)
+            write (unit, "(a)") str(lo)//tab//str(hi)//tab//str(hi - lo)//tab// &
+                itoa(run%n)//tab//status_word(run%status)//tab//"-"
+        else
+            call sequence_of(events, pairs)
+            write (unit, "(a)") str(lo)//tab//str(hi)//tab//str(hi - lo)//tab// &
+                itoa(run%n)//tab//status_word(run%status)//tab//sequence_text(pairs)
+        end if
+        n_intervals = n_intervals + 1
+    end do
+    close (unit)
+
+    ! 3. the critical restitution by simulation alone, with a tolerance near
+    !    the bottom of real128's range: bisect finite against collapsed
+    scene%tol = tol_fine
+    lo = e_quasi - 0.01_qp
+    hi = e_quasi + 0.01_qp
+    iterations = 0
+    do while (hi - lo > resolution .and. iterations < 200)
+        mid = 0.5_qp*(lo + hi)
+        scene%e = mid
+        call simulate(scene, run)
+        if (run%status == status_collapsed) then
+            lo = mid
+        else
+            hi = mid
+        end if
+        iterations = iterations + 1
+    end do
+    e_c_sim = hi
+
+    ! 4. the critical restitution from the cycle of the collapse: a run with
+    !    the fine tolerance just below the simulated boundary follows the cycle
+    !    for thousands of collisions; find its period inside the run and bisect
+    !    where the cycle's rate map gets complex eigenvalues
+    e_lo = e_c_sim - 0.001_qp
+    scene%e = e_lo
+    call simulate(scene, run, events)
+    call sequence_of(events, pairs, before_collapse=.true.)
+    pairs = pairs(:3*size(pairs)/4)
+    period = tail_period(pairs, 48, 24)
+    e_c = -1.0_qp
+    stat_c = -1
+    if (period > 0) then
+        cycle = pairs(size(pairs) - period + 1:)
+        e_hi = e_c_sim + 0.01_qp
+        call critical_restitution(scene%m, cycle, e_lo, e_hi, e_c, stat_c)
+    end if
+    if (stat_c /= status_normal) e_c = -1.0_qp
+    closed = 3.0_qp - 2.0_qp*sqrt(2.0_qp)
+
+    ! 5. n against the distance to e_c, with the fine tolerance
+    n_delta = 25
+    allocate (deltas(n_delta), n_delta_runs(n_delta), status_delta(n_delta))
+    call open_table(out, "b1_critical.tsv", "delta=e-e_crit"//tab//"e"//tab//"collisions" &
+        //tab//"status"//tab//"collisions*sqrt(delta)", unit, stat, msg)
+    if (stat /= status_normal) call fail(msg)
+    sx = 0
+    sy = 0
+    sxx = 0
+    sxy = 0
+    n_fit = 0
+    do k = 1, n_delta
+        deltas(k) = 10.0_qp**(-1.0_qp - 6.0_qp*real(k - 1, qp)/real(n_delta - 1, qp))
+        if (e_c > 0) then
+            scene%e = e_c + deltas(k)
+        else
+            scene%e = e_c_sim + deltas(k)
+        end if
+        call simulate(scene, run)
+        n_delta_runs(k) = run%n
+        status_delta(k) = run%status
+        write (unit, "(a)") str(deltas(k))//tab//str(scene%e)//tab//itoa(run%n)//tab// &
+            status_word(run%status)//tab//str(run%n*sqrt(deltas(k)))
+        ! fit log n = intercept + slope log delta where the asymptote holds (n >= 200)
+        if (run%status == status_normal .and. run%n >= 200) then
+            sx = sx + log(deltas(k))
+            sy = sy + log(real(run%n, qp))
+            sxx = sxx + log(deltas(k))**2
+            sxy = sxy + log(deltas(k))*log(real(run%n, qp))
+            n_fit = n_fit + 1
+        end if
+    end do
+    close (unit)
+    slope = 0
+    intercept = 0
+    if (n_fit >= 2) then
+        slope = (n_fit*sxy - sx*sy)/(n_fit*sxx - sx**2)
+        intercept = (sy - slope*sx)/n_fit
+    end if
+
+    call open_table(out, "b1_answers.tsv", answer_header, unit, stat, msg)
+    if (stat /= status_normal) call fail(msg)
+    if (e_c > 0) then
+        call write_answer(unit, "b1.e_crit", str(e_c), "closed_form_3-2sqrt2", str(closed), &
+            str(e_c - closed), "e where the rate map of the collapse cycle "// &
+            sequence_text(cycle)//" (period "//itoa(period)//", from the run at e = "// &
+            str(e_lo)//") gets a complex eigenvalue pair: bisection of its discriminant "// &
+            "in real(16); it coincides with tan^2(pi/8) = 3 - 2 sqrt(2)")
+    else
+        call write_answer(unit, "b1.e_crit", str(e_c_sim), "-", "-", "-", &
+            "no collapse cycle found for this scene (or not 4 spheres): the "// &
+            "simulation bound b1.e_crit_simulation is given")
+    end if
+    call write_answer(unit, "b1.e_crit_simulation", str(e_c_sim), "b1.e_crit", str(e_c), &
+        str(e_c_sim - e_c), "bisection of collapsed against finite runs with tol = "// &
+        str(tol_fine)//"; a finite run this close to e_crit shrinks its relative "// &
+        "velocities below any fixed tolerance, so this bound lies above e_crit")
+    call write_answer(unit, "b1.exponent", str(slope), "theory", str(-0.5_qp), &
+        str(slope + 0.5_qp), "least-squares slope of log n against log(e - e_crit) over "// &
+        itoa(n_fit)//" points with n >= 200; near e_crit the cycle map has eigenvalues "// &
+        "r exp(+-i theta) with theta ~ sqrt(e - e_crit), and the collisions end after "// &
+        "about pi/theta cycles")
+    call write_answer(unit, "b1.prefactor", str(exp(intercept)), "-", "-", "-", &
+        "n ~ prefactor (e - e_crit)^exponent")
+    call write_answer(unit, "b1.e_quasi_plastic", str(e_quasi), "-", "-", "-", &
+        "largest e where the scene's default tolerance (the relative velocities fall "// &
+        "below epsilon v0) reports the quasi-plastic case: the definition's "// &
+        "'quasi-plastic case reached'")
+    call write_answer(unit, "b1.scan_points", itoa(n_scan), "-", "-", "-", &
+        "e from 1 down to 0 in equal steps")
+    call write_answer(unit, "b1.intervals", itoa(n_intervals), "-", "-", "-", &
+        "intervals of constant n and sequence found, each end bisected to "// &
+        str(resolution)//" (changes with n > "//itoa(n_bisect_max)//" on both sides are "// &
+        "left to the critical table)")
+    call write_answer(unit, "b1.n_at_e1", itoa(n_scan_runs(1)), "closed_form", &
+        itoa(scene%p - 1), itoa(n_scan_runs(1) - (scene%p - 1)), &
+        "e = 1: one collision per pair")
+    close (unit)
+
+contains
+
+    !> Run at e with the scene's tolerance; class = sequence fingerprint, or
+    !> collapsed_class when the row collapsed.
+    subroutine classify(e, class)
+        real(qp), intent(in) :: e
+        integer(8), intent(out) :: class
+        scene%e = e
+        call simulate(scene, run, events)
+        if (run%status == status_collapsed) then
+            class = collapsed_class
+        else
+            call sequence_of(events, pairs)
+            class = sequence_hash(pairs)
+        end if
+    end subroutine classify
+
+    !> Bisect a change of class between a and b (classes ca, cb) down to
+    !> `resolution`, recursing into both halves when the midpoint differs from
+    !> both ends.
+    recursive subroutine bisect(a, b, ca, cb, depth)
+        real(qp), intent(in) :: a, b
+        integer(8), intent(in) :: ca, cb
+        integer, intent(in) :: depth
+        real(qp) :: m
+        integer(8) :: cm
+        if (b - a <= resolution .or. depth > 120) then
+            boundaries = [boundaries, 0.5_qp*(a + b)]
+            return
+        end if
+        m = 0.5_qp*(a + b)
+        call classify(m, cm)
+        if (run%n > n_bisect_max .and. cm /= collapsed_class) then
+            ! too close to the accumulation point: leave it to the critical table
+            if (cm /= ca) call bisect(a, m, ca, cm, depth + 1)
+            return
+        end if
+        if (cm /= ca) call bisect(a, m, ca, cm, depth + 1)
+        if (cm /= cb) call bisect(m, b, cm, cb, depth + 1)
+    end subroutine bisect
+
+    pure subroutine sort(x)
+        real(qp), intent(inout) :: x(:)
+        integer :: i, j
+        real(qp) :: key
+        do i = 2, size(x)
+            key = x(i)
+            j = i - 1
+            do while (j >= 1)
+                if (x(j) <= key) exit
+                x(j + 1) = x(j)
+                j = j - 1
+            end do
+            x(j + 1) = key
+        end do
+    end subroutine sort
+
+    pure function i8toa(i) result(s)
+        integer(8), intent(in) :: i
+        character(len=:), allocatable :: s
+        character(len=24) :: buf
+        write (buf, "(i0)") i
+        s = trim(buf)
+    end function i8toa
+
+    subroutine fail(text)
+        character(len=*), intent(in) :: text
+        write (error_unit, "(a)") name//": "//trim(text)
+        stop 2, quiet=.true.
+    end subroutine fail
+
+    subroutine usage()
+        print "(a)", "usage: "//name//" [key=value ...]", "", &
+            "C12 task b1: n(e) from e = 1 down to 0, its intervals of constant n and", &
+            "collision sequence, and the critical restitution of inelastic collapse.", &
+            "Writes OUT/b1_scan.tsv, b1_intervals.tsv, b1_critical.tsv, b1_answers.tsv.", "", &
+            "  out=results         output directory", &
+            "  n_scan=2001         points of the scan of e in [0, 1], >= 3", &
+            "  resolution=1e-12    width to which each change of n is bisected", &
+            "  n_bisect_max=300    changes with larger n on both sides are not bisected", &
+            "  tol_fine=1e-4000    tolerance of the runs near e_crit, 1e-4900 < tol < 1", &
+            scene_help()
+    end subroutine usage
+
+end program c12_b1
