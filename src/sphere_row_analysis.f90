@@ -10,6 +10,17 @@ module sphere_row_analysis
     private
     public :: sequence_of, sequence_text, sequence_hash, tail_period, rate_map
     public :: cubic_discriminant, critical_restitution, sequence_polynomials, poly_eval
+    public :: class_fn, bisect_changes
+
+    abstract interface
+        !> A label of the outcome at e (for instance a sequence fingerprint):
+        !> its changes are what bisect_changes looks for.
+        function class_fn(e) result(class)
+            import :: qp
+            real(qp), intent(in) :: e
+            integer(8) :: class
+        end function class_fn
+    end interface
 
 contains
 
@@ -102,6 +113,28 @@ contains
             end if
         end do
     end function tail_period
+
+    !> Every change of class(e) between a < b (classes ca /= cb), bisected
+    !> until the bracket is at most `resolution` wide; the bracket midpoints
+    !> are appended to `boundaries`. Both halves are searched whenever the
+    !> midpoint differs from both ends, so several changes between a and b are
+    !> found as long as a midpoint falls between them.
+    recursive subroutine bisect_changes(classify, a, b, ca, cb, resolution, boundaries)
+        procedure(class_fn) :: classify
+        real(qp), intent(in) :: a, b, resolution
+        integer(8), intent(in) :: ca, cb
+        real(qp), allocatable, intent(inout) :: boundaries(:)
+        real(qp) :: m
+        integer(8) :: cm
+        m = 0.5_qp*(a + b)
+        if (b - a <= resolution .or. m <= a .or. m >= b) then
+            boundaries = [boundaries, m]
+            return
+        end if
+        cm = classify(m)
+        if (cm /= ca) call bisect_changes(classify, a, m, ca, cm, resolution, boundaries)
+        if (cm /= cb) call bisect_changes(classify, m, b, cm, cb, resolution, boundaries)
+    end subroutine bisect_changes
 
     !> Matrix `a` of size (p-1, p-1) that maps the gap rates before the
     !> collisions `pairs` to the rates after them, by (6) with masses m.

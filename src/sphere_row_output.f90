@@ -4,7 +4,7 @@ module sphere_row_output
     use sphere_row_status, only: status_normal, status_invalid
     implicit none
     private
-    public :: open_table, write_answer, answer_header, tab, itoa
+    public :: open_table, write_answer, answer_header, tab, itoa, split_tabs
 
     !> The field separator.
     character(len=*), parameter :: tab = achar(9)
@@ -54,5 +54,29 @@ contains
         write (buf, "(i0)") i
         s = trim(buf)
     end function itoa
+
+    !> The tab-separated fields of `line` (trailing blanks of `line` ignored).
+    pure subroutine split_tabs(line, fields)
+        character(len=*), intent(in) :: line
+        character(len=:), allocatable, intent(out) :: fields(:)
+        integer :: n, i, start, k
+        n = 1
+        do i = 1, len_trim(line)
+            if (line(i:i) == tab) n = n + 1
+        end do
+        allocate (character(len=max(1, len_trim(line))) :: fields(n))
+        start = 1
+        k = 0
+        do i = 1, len_trim(line) + 1
+            if (i > len_trim(line)) then
+                k = k + 1
+                fields(k) = line(start:len_trim(line))
+            else if (line(i:i) == tab) then
+                k = k + 1
+                fields(k) = line(start:i - 1)
+                start = i + 1
+            end if
+        end do
+    end subroutine split_tabs
 
 end module sphere_row_output

@@ -9,7 +9,7 @@ program c12_b1
         unused_arg, wants_help, scene_help
     use sphere_row_output, only: open_table, write_answer, answer_header, tab, itoa
     use sphere_row_analysis, only: sequence_of, sequence_text, sequence_hash, tail_period, &
-        critical_restitution
+        critical_restitution, bisect_changes
     implicit none
     character(len=*), parameter :: name = "c12-b1"
     !> Class of a run with a collapse: its count depends on tol, not on e alone.
@@ -90,7 +90,8 @@ program c12_b1
     do j = 1, n_scan - 1
         if (class_scan(j) == class_scan(j + 1)) cycle
         if (min(n_scan_runs(j), n_scan_runs(j + 1)) > n_bisect_max) cycle
-        call bisect(e_scan(j + 1), e_scan(j), class_scan(j + 1), class_scan(j), 0)
+        call bisect_changes(class_of, e_scan(j + 1), e_scan(j), class_scan(j + 1), &
+            class_scan(j), resolution, boundaries)
     end do
     n_boundaries = size(boundaries)
     call sort(boundaries)
@@ -256,6 +257,13 @@ program c12_b1
 
 contains
 
+    !> classify as a function, for bisect_changes.
+    function class_of(e) result(class)
+        real(qp), intent(in) :: e
+        integer(8) :: class
+        call classify(e, class)
+    end function class_of
+
     !> Run at e with the scene's tolerance; class = sequence fingerprint, or
     !> collapsed_class when the row collapsed.
     subroutine classify(e, class)
@@ -270,30 +278,6 @@ contains
             class = sequence_hash(pairs)
         end if
     end subroutine classify
-
-    !> Bisect a change of class between a and b (classes ca, cb) down to
-    !> `resolution`, recursing into both halves when the midpoint differs from
-    !> both ends.
-    recursive subroutine bisect(a, b, ca, cb, depth)
-        real(qp), intent(in) :: a, b
-        integer(8), intent(in) :: ca, cb
-        integer, intent(in) :: depth
-        real(qp) :: m
-        integer(8) :: cm
-        if (b - a <= resolution .or. depth > 120) then
-            boundaries = [boundaries, 0.5_qp*(a + b)]
-            return
-        end if
-        m = 0.5_qp*(a + b)
-        call classify(m, cm)
-        if (run%n > n_bisect_max .and. cm /= collapsed_class) then
-            ! too close to the accumulation point: leave it to the critical table
-            if (cm /= ca) call bisect(a, m, ca, cm, depth + 1)
-            return
-        end if
-        if (cm /= ca) call bisect(a, m, ca, cm, depth + 1)
-        if (cm /= cb) call bisect(m, b, cm, cb, depth + 1)
-    end subroutine bisect
 
     pure subroutine sort(x)
         real(qp), intent(inout) :: x(:)
@@ -334,6 +318,7 @@ contains
             "  n_scan=2001         points of the scan of e in [0, 1], >= 3", &
             "  resolution=1e-12    width to which each change of n is bisected", &
             "  n_bisect_max=300    changes with larger n on both sides are not bisected", &
+            "                      (with the default tol, n stays below ~150 anyway)", &
             "  tol_fine=1e-4000    tolerance of the runs near e_crit, 1e-4900 < tol < 1", &
             scene_help()
     end subroutine usage

@@ -15,4 +15,4 @@ set grid
 set key top right box opaque
 plot f using 1:(abs($3) > 0 ? abs($3) : 1e-36) with linespoints pt 7 ps 1.3 lw 2 lc rgb '#1f77b4' title '|residual| from e_0 = 0.5, e_1 = 0.6', \
      1e-30 with lines dt 2 lc rgb '#d62728' title 'tolerance 10^{-30}', \
-     2**-112 with lines dt 3 lc rgb '#7f7f7f' title 'real(16) roundoff of v_4 (2^{-112}/2)'
+     2**-113 with lines dt 3 lc rgb '#7f7f7f' title 'real(16) unit roundoff 2^{-113}'

@@ -1,0 +1,167 @@
+!> Speed of the engine per precision kind and of the study, into bench.tsv.
+!>
+!> Timing is measured here, never asserted in tests: wall-clock numbers of
+!> one machine, written with a description of that machine.
+program c12_bench
+    use, intrinsic :: iso_fortran_env, only: error_unit, compiler_version, compiler_options, &
+        int64
+    use sphere_row, only: qp, xdp, dp, sp, scene_t, run_t, scene_xdp_t, run_xdp_t, &
+        scene_dp_t, run_dp_t, scene_sp_t, run_sp_t, scene_init, simulate, status_normal
+    use sphere_row_args, only: get_args, take_key, parse_real, unused_arg, wants_help
+    use sphere_row_output, only: open_table, tab, itoa, split_tabs
+    implicit none
+    character(len=*), parameter :: name = "c12-bench"
+    character(len=*), parameter :: tasks(6) = ["a1", "a2", "b1", "b2", "c1", "c2"]
+    character(len=:), allocatable :: args(:), text, out
+    character(len=300) :: msg
+    logical, allocatable :: used(:)
+    logical :: found
+    real(qp) :: seconds, e_values(3) = [0.2_qp, 0.5_qp, 0.18_qp]
+    real :: min_seconds
+    integer :: stat, unit, i, k
+
+    call get_args(args)
+    if (wants_help(args)) then
+        print "(a)", "usage: "//name//" [out=results] [min_seconds=0.3]", &
+            "Times the engine in each precision kind (ns per collision) and collects", &
+            "the wall time of each study program from OUT/timing/; writes OUT/bench.tsv."
+        stop
+    end if
+    allocate (used(size(args)))
+    out = "results"
+    call take_key(args, used, "out", text, found)
+    if (found) out = text
+    min_seconds = 0.3
+    call take_key(args, used, "min_seconds", text, found)
+    if (found) then
+        call parse_real("min_seconds", text, seconds, stat, msg)
+        if (stat /= status_normal) call fail(msg)
+        if (.not. (seconds > 0 .and. seconds < 100)) &
+            call fail("min_seconds = "//text//": allowed 0 < min_seconds < 100")
+        min_seconds = real(seconds)
+    end if
+    call unused_arg(args, used, "out, min_seconds", stat, msg)
+    if (stat /= status_normal) call fail(msg)
+
+    call open_table(out, "bench.tsv", "quantity"//tab//"value"//tab//"unit"//tab//"note", &
+        unit, stat, msg)
+    if (stat /= status_normal) call fail(msg)
+    write (unit, "(a)") "machine.cpu"//tab//cpu_model()//tab//"-"//tab//"/proc/cpuinfo"
+    write (unit, "(a)") "machine.compiler"//tab//compiler_version()//tab//"-"//tab//"-"
+    write (unit, "(a)") "machine.flags"//tab//compiler_options()//tab//"-"//tab//"-"
+    do k = 1, size(e_values)
+        call time_kind("real128", e_values(k))
+        call time_kind("real80", e_values(k))
+        call time_kind("real64", e_values(k))
+        call time_kind("real32", e_values(k))
+    end do
+    seconds = 0
+    do i = 1, size(tasks)
+        call study_time("c12-"//tasks(i), seconds)
+    end do
+    write (unit, "(a, f0.3, a)") "study.total_seconds"//tab, seconds, tab//"s"//tab// &
+        "wall time of the six task programs of one make study, one after the other"
+    close (unit)
+
+contains
+
+    !> Nanoseconds per collision of the definition's scene at e in one kind,
+    !> over at least min_seconds of repeated runs (one core).
+    subroutine time_kind(kind_name, e)
+        character(len=*), intent(in) :: kind_name
+        real(qp), intent(in) :: e
+        type(scene_t) :: s16
+        type(run_t) :: r16
+        type(scene_xdp_t) :: s10
+        type(run_xdp_t) :: r10
+        type(scene_dp_t) :: s8
+        type(run_dp_t) :: r8
+        type(scene_sp_t) :: s4
+        type(run_sp_t) :: r4
+        integer(int64) :: c0, c1, rate, collisions, runs
+        real :: elapsed
+        character(len=32) :: buf
+        call scene_init(s16, stat, msg, e=e)
+        call scene_init(s10, stat, msg, e=real(e, xdp))
+        call scene_init(s8, stat, msg, e=real(e, dp))
+        call scene_init(s4, stat, msg, e=real(e, sp))
+        collisions = 0
+        runs = 0
+        call system_clock(c0, rate)
+        do
+            select case (kind_name)
+            case ("real128")
+                call simulate(s16, r16)
+                collisions = collisions + r16%n
+            case ("real80")
+                call simulate(s10, r10)
+                collisions = collisions + r10%n
+            case ("real64")
+                call simulate(s8, r8)
+                collisions = collisions + r8%n
+            case default
+                call simulate(s4, r4)
+                collisions = collisions + r4%n
+            end select
+            runs = runs + 1
+            if (mod(runs, 1000_int64) /= 0) cycle
+            call system_clock(c1)
+            elapsed = real(c1 - c0)/real(rate)
+            if (elapsed >= min_seconds) exit
+        end do
+        write (buf, "(f4.2)") e
+        write (unit, "(a, f0.1, a)") "engine."//kind_name//".ns_per_collision.e"//trim(buf) &
+            //tab, 1.0e9*elapsed/real(collisions), tab//"ns"//tab//itoa(int(collisions/runs)) &
+            //" collisions per run, "//itoa(int(runs))//" runs"
+        write (unit, "(a, es10.3, a)") "engine."//kind_name//".collisions_per_second.e" &
+            //trim(buf)//tab, real(collisions)/elapsed, tab//"1/s"//tab//"-"
+    end subroutine time_kind
+
+    !> Wall time of one study program as recorded by the Makefile.
+    subroutine study_time(program, total)
+        character(len=*), intent(in) :: program
+        real(qp), intent(inout) :: total
+        character(len=200) :: line
+        character(len=:), allocatable :: f(:)
+        real(qp) :: t
+        integer :: u, ios
+        open (newunit=u, file=out//"/timing/"//program//".tsv", status="old", action="read", &
+            iostat=ios)
+        if (ios /= 0) return
+        read (u, "(a)", iostat=ios) line
+        close (u)
+        if (ios /= 0) return
+        call split_tabs(line, f)
+        if (size(f) < 2) return
+        read (f(2), *, iostat=ios) t
+        if (ios /= 0) return
+        total = total + t
+        write (unit, "(a)") "study."//program//".seconds"//tab//trim(f(2))//tab//"s"//tab// &
+            "wall time of its last run by make"
+    end subroutine study_time
+
+    function cpu_model() result(model)
+        character(len=:), allocatable :: model
+        character(len=500) :: line
+        integer :: u, ios
+        model = "unknown"
+        open (newunit=u, file="/proc/cpuinfo", status="old", action="read", iostat=ios)
+        if (ios /= 0) return
+        do
+            read (u, "(a)", iostat=ios) line
+            if (ios /= 0) exit
+            if (index(line, "model name") == 1) then
+                model = trim(adjustl(line(index(line, ":") + 1:)))
+                exit
+            end if
+        end do
+        close (u)
+    end function cpu_model
+
+    subroutine fail(text)
+        character(len=*), intent(in) :: text
+        write (error_unit, "(a)") name//": "//trim(text)
+        stop 2, quiet=.true.
+    end subroutine fail
+
+end program c12_bench

@@ -1,0 +1,200 @@
+!> Tests of the study's core computations on small cases: the secant solver,
+!> the bisection of changes, the collapse-cycle analysis, the closed forms.
+module test_study
+    use sphere_row, only: qp, scene_t, run_t, event_log_t, scene_init, simulate, str, &
+        status_normal
+    use sphere_row_analysis, only: sequence_of, sequence_hash, sequence_text, tail_period, &
+        rate_map, cubic_discriminant, critical_restitution, sequence_polynomials, poly_eval, &
+        bisect_changes
+    use sphere_row_secant, only: secant, secant_result_t, secant_converged, secant_flat, &
+        secant_left_interval, secant_invalid
+    use testsuite, only: error_t, unittest_t, new_unittest, check
+    implicit none
+    private
+    public :: collect_study
+
+    real(qp), parameter :: eps = epsilon(1.0_qp)
+    !> Shared by the class functions below (they take e only).
+    type(scene_t), save :: scene
+    type(run_t), save :: run
+    type(event_log_t), save :: events
+
+contains
+
+    !> The study's tests.
+    function collect_study() result(tests)
+        type(unittest_t), allocatable :: tests(:)
+        tests = [ &
+            new_unittest("secant_known_root", test_secant_root), &
+            new_unittest("secant_flat_function", test_secant_flat), &
+            new_unittest("secant_small_slope_leaves", test_secant_leaves), &
+            new_unittest("secant_bad_start", test_secant_bad_start), &
+            new_unittest("bisect_staircase", test_bisect_staircase), &
+            new_unittest("bisect_change_of_n", test_bisect_n), &
+            new_unittest("critical_restitution_4", test_critical), &
+            new_unittest("tail_period", test_tail_period), &
+            new_unittest("sequence_polynomials", test_polynomials) &
+            ]
+    end function collect_study
+
+    function cubic_minus_two(x) result(f)
+        real(qp), intent(in) :: x
+        real(qp) :: f
+        f = x**3 - 2
+    end function cubic_minus_two
+
+    function plateau(x) result(f)
+        real(qp), intent(in) :: x
+        real(qp) :: f
+        f = 0.25_qp + 0*x
+    end function plateau
+
+    function gentle(x) result(f)
+        real(qp), intent(in) :: x
+        real(qp) :: f
+        f = 1 + 1.0e-3_qp*x
+    end function gentle
+
+    !> x^3 = 2 from 1, 2: converges to 2^(1/3) within the residual tolerance.
+    subroutine test_secant_root(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(secant_result_t) :: r
+        call secant(cubic_minus_two, 1.0_qp, 2.0_qp, 0.0_qp, 3.0_qp, 1.0e-30_qp, 64*eps, 50, r)
+        call check(error, r%status == secant_converged, "x^3 - 2: not converged")
+        call check(error, abs(r%x - 2.0_qp**(1.0_qp/3)) <= 1.0e-30_qp, &
+            "x^3 - 2: root "//str(r%x))
+        call check(error, r%iterations < 15, "x^3 - 2: too many iterations")
+    end subroutine test_secant_root
+
+    !> A constant residual is reported as flat, not returned as a root.
+    subroutine test_secant_flat(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(secant_result_t) :: r
+        call secant(plateau, 0.1_qp, 0.2_qp, 0.0_qp, 1.0_qp, 1.0e-30_qp, 64*eps, 50, r)
+        call check(error, r%status == secant_flat .and. r%iterations == 0, &
+            "constant residual not reported flat")
+    end subroutine test_secant_flat
+
+    !> A root far outside the interval (tiny slope) is reported, not followed.
+    subroutine test_secant_leaves(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(secant_result_t) :: r
+        call secant(gentle, 0.1_qp, 0.2_qp, 0.0_qp, 1.0_qp, 1.0e-30_qp, 64*eps, 50, r)
+        call check(error, r%status == secant_left_interval, "step out of [0,1] not reported")
+    end subroutine test_secant_leaves
+
+    subroutine test_secant_bad_start(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(secant_result_t) :: r
+        call secant(gentle, 0.5_qp, 0.5_qp, 0.0_qp, 1.0_qp, 1.0e-30_qp, 64*eps, 50, r)
+        call check(error, r%status == secant_invalid, "equal starts accepted")
+        call secant(gentle, -1.0_qp, 0.5_qp, 0.0_qp, 1.0_qp, 1.0e-30_qp, 64*eps, 50, r)
+        call check(error, r%status == secant_invalid, "start outside the interval accepted")
+    end subroutine test_secant_bad_start
+
+    function staircase(e) result(class)
+        real(qp), intent(in) :: e
+        integer(8) :: class
+        class = int(floor(10*e), 8)
+    end function staircase
+
+    !> floor(10 e) between 0.05 and 0.35: three steps, each found to 1e-12.
+    subroutine test_bisect_staircase(error)
+        type(error_t), allocatable, intent(out) :: error
+        real(qp), allocatable :: b(:)
+        integer :: k
+        allocate (b(0))
+        call bisect_changes(staircase, 0.05_qp, 0.35_qp, 0_8, 3_8, 1.0e-12_qp, b)
+        call check(error, size(b) == 3, "staircase: expected 3 changes")
+        if (allocated(error)) return
+        do k = 1, 3
+            call check(error, abs(b(k) - k/10.0_qp) <= 1.0e-12_qp, "staircase: change at " &
+                //str(b(k)))
+        end do
+    end subroutine test_bisect_staircase
+
+    function n_class(e) result(class)
+        real(qp), intent(in) :: e
+        integer(8) :: class
+        scene%e = e
+        call simulate(scene, run, events)
+        class = int(run%n, 8)
+    end function n_class
+
+    !> The change of n between e = 0.25 and 0.3 of the definition's scene: on
+    !> each side of the bisected point, within the resolution, n differs.
+    subroutine test_bisect_n(error)
+        type(error_t), allocatable, intent(out) :: error
+        real(qp), allocatable :: b(:)
+        integer :: stat, n_lo, n_hi
+        character(len=200) :: msg
+        call scene_init(scene, stat, msg)
+        allocate (b(0))
+        call bisect_changes(n_class, 0.25_qp, 0.3_qp, n_class(0.25_qp), n_class(0.3_qp), &
+            1.0e-12_qp, b)
+        call check(error, size(b) >= 1, "no change of n found in [0.25, 0.3]")
+        if (allocated(error)) return
+        scene%e = b(1) - 1.0e-12_qp
+        call simulate(scene, run)
+        n_lo = run%n
+        scene%e = b(1) + 1.0e-12_qp
+        call simulate(scene, run)
+        n_hi = run%n
+        call check(error, n_lo /= n_hi, "n does not change across the bisected point")
+    end subroutine test_bisect_n
+
+    !> Four equal spheres, cycle 1,2,1,2,3,2,3,2: the eigenvalues of its rate
+    !> map merge at tan(pi/8)^2 = 3 - 2 sqrt(2) (the known collapse threshold),
+    !> and the discriminant is positive below and negative above.
+    subroutine test_critical(error)
+        type(error_t), allocatable, intent(out) :: error
+        real(qp) :: e_c, a(3, 3), m(4)
+        integer :: stat
+        m = 1
+        call critical_restitution(m, [1, 2, 1, 2, 3, 2, 3, 2], 0.1_qp, 0.3_qp, e_c, stat)
+        call check(error, stat == status_normal, "no sign change in [0.1, 0.3]")
+        call check(error, abs(e_c - (3 - 2*sqrt(2.0_qp))) <= 1.0e-30_qp, "e_c = "//str(e_c))
+        call rate_map(m, 0.15_qp, [1, 2, 1, 2, 3, 2, 3, 2], a)
+        call check(error, cubic_discriminant(a) > 0, "discriminant not > 0 below e_c")
+        call rate_map(m, 0.2_qp, [1, 2, 1, 2, 3, 2, 3, 2], a)
+        call check(error, cubic_discriminant(a) < 0, "discriminant not < 0 above e_c")
+        call critical_restitution([1.0_qp, 1.0_qp, 1.0_qp], [1, 2], 0.01_qp, 0.5_qp, e_c, stat)
+        call check(error, stat /= status_normal, "three spheres accepted by the 3x3 analysis")
+    end subroutine test_critical
+
+    subroutine test_tail_period(error)
+        type(error_t), allocatable, intent(out) :: error
+        integer, parameter :: cycle(6) = [1, 2, 1, 3, 2, 3]
+        integer :: s(60), j
+        s(1:6) = [3, 1, 3, 3, 2, 1]
+        do j = 7, 60
+            s(j) = cycle(mod(j - 7, 6) + 1)
+        end do
+        call check(error, tail_period(s, 48, 24) == 6, "period of 121323... not 6")
+        call check(error, tail_period(s(1:20), 48, 24) == 0, "short sequence given a period")
+        call check(error, sequence_text([1, 2, 3]) == "123", "sequence_text")
+        call check(error, sequence_hash([1, 2]) /= sequence_hash([2, 1]), "hash ignores order")
+    end subroutine test_tail_period
+
+    !> The polynomials of a run's own sequence reproduce its final velocities,
+    !> and for 1,2,3 they are v4 = ((1+e)/2)^3 by hand.
+    subroutine test_polynomials(error)
+        type(error_t), allocatable, intent(out) :: error
+        real(qp), allocatable :: coef(:, :)
+        integer, allocatable :: pairs(:)
+        integer :: stat, i
+        character(len=200) :: msg
+        call sequence_polynomials([1.0_qp, 1.0_qp, 1.0_qp, 1.0_qp], 1.0_qp, [1, 2, 3], coef)
+        call check(error, all(abs(coef(:, 4) - [1, 3, 3, 1]/8.0_qp) <= eps), &
+            "123: v4 coefficients not (1,3,3,1)/8")
+        call scene_init(scene, stat, msg, e=0.37_qp, masses=[1.0_qp, 2.0_qp, 1.5_qp, 0.5_qp])
+        call simulate(scene, run, events)
+        call sequence_of(events, pairs)
+        call sequence_polynomials(scene%m, scene%v0, pairs, coef)
+        do i = 1, 4
+            call check(error, abs(poly_eval(coef(:, i), scene%e) - run%v(i)) <= 64*eps, &
+                "polynomial of the run's sequence differs from the run")
+        end do
+    end subroutine test_polynomials
+
+end module test_study
