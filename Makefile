@@ -106,7 +106,7 @@ $(RESULTS)/%.svg: study/%.gp
 $(RESULTS)/a1_paths.png $(RESULTS)/a1_paths.svg: $(A1)
 $(RESULTS)/b1_n.png $(RESULTS)/b1_n.svg: $(B1)
 $(RESULTS)/b1_critical.png $(RESULTS)/b1_critical.svg: $(B1)
-$(RESULTS)/b2_velocities.png $(RESULTS)/b2_velocities.svg: $(B2)
+$(RESULTS)/b2_velocities.png $(RESULTS)/b2_velocities.svg: $(B2) $(B1)
 $(RESULTS)/c1_secant.png $(RESULTS)/c1_secant.svg: $(C1)
 $(RESULTS)/c2_ecdf.png $(RESULTS)/c2_ecdf.svg: $(C2)
 $(RESULTS)/c2_histogram.png $(RESULTS)/c2_histogram.svg: $(C2)
