@@ -1,0 +1,357 @@
+!> Tests of the Monte Carlo of task c2: the Box–Muller sampler, the statistics
+!> helpers on samples with known answers, the rule for e outside [0, 1], and
+!> a small Monte Carlo against the exact law of v4.
+module test_monte_carlo
+    use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
+    use sphere_row, only: dp, qp, scene_t, scene_init, status_normal, status_invalid, str
+    use sphere_row_monte_carlo, only: normal_sampler_t, mc_counts_t, monte_carlo_v4, &
+        normal_mass_outside_unit, normal_cdf, normal_density, sample_moments, &
+        normal_quantile, mean_ci_half_width, sort_values, sorted_quantile, ks_distance, &
+        cubic_law_applies, cubic_law_mean, cubic_law_sd, cubic_law_quantile, cubic_law_cdf, &
+        cubic_law_density, cubic_law_v4, single_impact_bound
+    use testsuite, only: error_t, unittest_t, new_unittest, check
+    implicit none
+    private
+    public :: collect_monte_carlo
+
+    !> Unit roundoff of the sums (real128) and of the samples (real64).
+    real(qp), parameter :: eps_q = epsilon(1.0_qp)
+    real(dp), parameter :: eps_d = epsilon(1.0_dp)
+    !> The definition's law of e.
+    real(qp), parameter :: m_def = 0.5_qp, s_def = 0.05_qp
+    !> Statistical checks allow this many standard errors: with fixed seeds
+    !> they are deterministic, and a correct sampler passes them with
+    !> probability 1 - 6e-5 for any seed.
+    real(qp), parameter :: k_se = 4.0_qp
+
+contains
+
+    !> The Monte Carlo tests.
+    function collect_monte_carlo() result(tests)
+        type(unittest_t), allocatable :: tests(:)
+        tests = [ &
+            new_unittest("box_muller_moments", test_box_muller_moments), &
+            new_unittest("box_muller_reproducible", test_reproducible), &
+            new_unittest("box_muller_unseeded_nan", test_unseeded), &
+            new_unittest("moments_quantiles_known_sample", test_known_sample), &
+            new_unittest("ks_distance_known", test_ks_known), &
+            new_unittest("ci_half_width", test_ci_half_width), &
+            new_unittest("normal_tails", test_normal_tails), &
+            new_unittest("cubic_law_moments_by_quadrature", test_cubic_law_moments), &
+            new_unittest("cubic_law_cdf_quantile_density", test_cubic_law_functions), &
+            new_unittest("redraw_rule_truncates", test_redraw_rule), &
+            new_unittest("refuses_law_outside_unit", test_refusals), &
+            new_unittest("small_mc_against_closed_form", test_small_mc), &
+            new_unittest("single_impact_bound", test_single_impact_bound) &
+            ]
+    end function collect_monte_carlo
+
+    !> 10^5 normals: mean 0 and variance 1 within k_se standard errors
+    !> (1/sqrt(N) and sqrt(2/N)); the fourth moment 3 within k_se sqrt(96/N);
+    !> the two normals of each pair uncorrelated (a sampler that reused one
+    !> of them, or repeated it, fails here).
+    subroutine test_box_muller_moments(error)
+        type(error_t), allocatable, intent(out) :: error
+        integer, parameter :: n = 100000
+        type(normal_sampler_t) :: sampler
+        real(dp), allocatable :: z(:)
+        real(qp) :: mean, sd, fourth, pair
+        integer :: i, stat
+        character(len=200) :: msg
+        allocate (z(n))
+        call sampler%seed(2718, stat, msg)
+        call check(error, stat == status_normal, "seed refused: "//trim(msg))
+        do i = 1, n
+            call sampler%draw(z(i))
+        end do
+        call sampler%release()
+        call sample_moments(z, mean, sd)
+        fourth = sum(real(z, qp)**4)/n
+        ! the two normals of a pair are independent: their product has mean 0, sd 1
+        pair = sum(real(z(1::2), qp)*real(z(2::2), qp))/(n/2)
+        call check(error, abs(mean) <= k_se/sqrt(real(n, qp)), "mean "//str(mean))
+        call check(error, abs(sd**2 - 1.0_qp) <= k_se*sqrt(2.0_qp/n), "variance "//str(sd**2))
+        call check(error, abs(fourth - 3.0_qp) <= k_se*sqrt(96.0_qp/n), &
+            "fourth moment "//str(fourth))
+        call check(error, abs(pair) <= k_se/sqrt(real(n/2, qp)), "pair product "//str(pair))
+    end subroutine test_box_muller_moments
+
+    !> The same seed gives the same draws, bit for bit, after a reseed (which
+    !> also drops the stored second normal); another seed gives others.
+    subroutine test_reproducible(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(normal_sampler_t) :: sampler
+        real(dp) :: first(9), again(9), other(9)
+        integer :: i, stat
+        character(len=200) :: msg
+        call sampler%seed(12, stat, msg)
+        do i = 1, size(first)
+            call sampler%draw(first(i))
+        end do
+        call sampler%seed(12, stat, msg)
+        do i = 1, size(again)
+            call sampler%draw(again(i))
+        end do
+        call sampler%seed(13, stat, msg)
+        do i = 1, size(other)
+            call sampler%draw(other(i))
+        end do
+        call sampler%release()
+        call check(error, all(first == again), "seed 12 did not reproduce its draws")
+        call check(error, all(first /= other), "seeds 12 and 13 share draws")
+        call check(error, all(abs(first) < 10.0_dp), "implausible draws")
+        call sampler%seed(0, stat, msg)
+        call check(error, stat == status_invalid .and. index(msg, "seed") > 0, &
+            "seed 0 (GSL's alias of 4357) not refused")
+    end subroutine test_reproducible
+
+    !> Drawing before seeding gives NaN rather than touching a null generator.
+    subroutine test_unseeded(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(normal_sampler_t) :: sampler
+        real(dp) :: z
+        call sampler%draw(z)
+        call check(error, ieee_is_nan(z), "unseeded draw is not NaN")
+        call sampler%release()
+    end subroutine test_unseeded
+
+    !> A permutation of 1..1001: mean 501, variance n(n+1)/12 exactly; sorted
+    !> back to 1..1001; GSL's quantile of level f is 1 + f (n-1).
+    subroutine test_known_sample(error)
+        type(error_t), allocatable, intent(out) :: error
+        integer, parameter :: n = 1001
+        real(dp) :: x(n)
+        real(qp) :: mean, sd, sd_exact
+        real(dp) :: f
+        integer :: i, k
+        ! 389 is prime to 1001 = 7 11 13, so i -> 389 i mod n permutes 0..n-1
+        x = [(real(mod(389*i, n) + 1, dp), i=0, n - 1)]
+        call sample_moments(x, mean, sd)
+        sd_exact = sqrt(real(n, qp)*(n + 1)/12.0_qp)
+        call check(error, abs(mean - 501.0_qp) <= 4*eps_q*501.0_qp, "mean "//str(mean))
+        call check(error, abs(sd - sd_exact) <= 16*eps_q*sd_exact, &
+            "sd "//str(sd)//" /= "//str(sd_exact))
+        call sort_values(x)
+        call check(error, all(x == [(real(i, dp), i=1, n)]), "gsl_sort did not give 1..n")
+        call check(error, sorted_quantile(x, 0.025_dp) == 26.0_dp, "q025 /= 26")
+        call check(error, sorted_quantile(x, 0.975_dp) == 976.0_dp, "q975 /= 976")
+        call check(error, sorted_quantile(x, 0.0_dp) == 1.0_dp .and. &
+            sorted_quantile(x, 1.0_dp) == real(n, dp), "q0, q1 /= min, max")
+        do k = 1, 9
+            f = 0.1037_dp*k
+            call check(error, abs(sorted_quantile(x, f) - (1.0_dp + f*(n - 1))) <= &
+                8*eps_d*n, "interpolated quantile at f = "//str(f))
+        end do
+        call sample_moments(x(:1), mean, sd)
+        call check(error, mean == 1.0_qp .and. sd == 0.0_qp, "one value: mean 1, sd 0")
+    end subroutine test_known_sample
+
+    !> Order statistics at the midpoints of n equal cells of the uniform law are
+    !> at distance exactly 1/(2n) from it; a shift by 0.3/n makes it 0.8/n.
+    subroutine test_ks_known(error)
+        type(error_t), allocatable, intent(out) :: error
+        integer, parameter :: n = 500
+        real(dp) :: cdf(n)
+        integer :: i
+        cdf = [((i - 0.5_dp)/n, i=1, n)]
+        call check(error, abs(ks_distance(cdf) - 0.5_dp/n) <= 4*eps_d, &
+            "midpoints: "//str(ks_distance(cdf)))
+        cdf = cdf + 0.3_dp/n
+        call check(error, abs(ks_distance(cdf) - 0.8_dp/n) <= 4*eps_d, &
+            "shifted: "//str(ks_distance(cdf)))
+    end subroutine test_ks_known
+
+    !> z_0.975 sd/sqrt(n) with z_0.975 = 1.959963984540054 (to a double).
+    subroutine test_ci_half_width(error)
+        type(error_t), allocatable, intent(out) :: error
+        real(qp) :: z, hw
+        z = normal_quantile(0.975_qp)
+        call check(error, abs(z - 1.959963984540054_qp) <= 1.0e-15_qp, "z975 "//str(z))
+        hw = mean_ci_half_width(2.0_qp, 400, 0.95_qp)
+        call check(error, abs(hw - z*2.0_qp/20.0_qp) <= 4*eps_q, "half-width "//str(hw))
+    end subroutine test_ci_half_width
+
+    !> The mass outside [0, 1] keeps its digits in the far tails: 2 Phi(-10)
+    !> = 1.5239706048321...e-23 for the definition's law; Phi and phi of
+    !> N(mean, sd^2) at simple points.
+    subroutine test_normal_tails(error)
+        type(error_t), allocatable, intent(out) :: error
+        real(dp) :: tail
+        tail = normal_mass_outside_unit(m_def, s_def)
+        call check(error, abs(tail/1.5239706048321e-23_dp - 1.0_dp) <= 1.0e-12_dp, &
+            "2 Phi(-10) = "//str(tail))
+        call check(error, abs(normal_cdf(0.5_dp, m_def, s_def) - 0.5_dp) <= eps_d, &
+            "Phi at the mean")
+        call check(error, abs(normal_density(0.5_dp, m_def, s_def) &
+            - 0.3989422804014327_dp/0.05_dp) <= 8*eps_d*8.0_dp, "phi at the mean")
+    end subroutine test_normal_tails
+
+    !> Mean and sd of v0 ((1+e)/2)^3 by the trapezoid rule over the normal
+    !> density (exponentially accurate for this smooth, fast-decaying integrand)
+    !> against the closed forms; and the definition's mean 0.42328125.
+    subroutine test_cubic_law_moments(error)
+        type(error_t), allocatable, intent(out) :: error
+        integer, parameter :: half = 1200
+        real(qp), parameter :: z_far = 12.0_qp, v0 = 1.5_qp
+        real(qp) :: h, z, w, v, m1, m2, mean, sd
+        integer :: i
+        h = z_far/half
+        m1 = 0.0_qp
+        m2 = 0.0_qp
+        do i = -half, half
+            z = i*h
+            w = h*exp(-z*z/2.0_qp)/sqrt(2.0_qp*acos(-1.0_qp))
+            v = cubic_law_v4(m_def + s_def*z, v0)
+            m1 = m1 + w*v
+            m2 = m2 + w*v*v
+        end do
+        mean = cubic_law_mean(m_def, s_def, v0)
+        sd = cubic_law_sd(m_def, s_def, v0)
+        call check(error, abs(m1 - mean) <= 1.0e-28_qp, "mean "//str(m1)//" /= "//str(mean))
+        call check(error, abs(sqrt(m2 - m1**2) - sd) <= 1.0e-26_qp, &
+            "sd "//str(sqrt(m2 - m1**2))//" /= "//str(sd))
+        call check(error, abs(cubic_law_mean(m_def, s_def, 1.0_qp) - 0.42328125_qp) <= 2*eps_q, &
+            "definition's mean "//str(cubic_law_mean(m_def, s_def, 1.0_qp)))
+    end subroutine test_cubic_law_moments
+
+    !> The law's distribution function inverts its quantile, and its density
+    !> is the derivative of the distribution function (central difference).
+    subroutine test_cubic_law_functions(error)
+        type(error_t), allocatable, intent(out) :: error
+        real(qp), parameter :: levels(5) = [0.001_qp, 0.025_qp, 0.5_qp, 0.975_qp, 0.999_qp]
+        real(dp) :: v, dv, slope
+        integer :: i
+        do i = 1, size(levels)
+            v = real(cubic_law_quantile(levels(i), m_def, s_def, 1.0_qp), dp)
+            call check(error, abs(cubic_law_cdf(v, m_def, s_def, 1.0_qp) - real(levels(i), dp)) &
+                <= 1.0e-13_dp, "cdf(quantile) at "//str(levels(i)))
+            dv = 1.0e-5_dp
+            slope = (cubic_law_cdf(v + dv, m_def, s_def, 1.0_qp) &
+                - cubic_law_cdf(v - dv, m_def, s_def, 1.0_qp))/(2*dv)
+            call check(error, abs(slope/cubic_law_density(v, m_def, s_def, 1.0_qp) - 1.0_dp) &
+                <= 1.0e-6_dp, "density at "//str(levels(i)))
+        end do
+    end subroutine test_cubic_law_functions
+
+    !> With mean 0.95, sd 0.1 about 31 % of the normal law lies above 1: the
+    !> draws outside are counted, their number is n P(out)/P(in) within
+    !> k_se standard errors (negative binomial), and no sample leaves [0, 1].
+    subroutine test_redraw_rule(error)
+        type(error_t), allocatable, intent(out) :: error
+        integer, parameter :: n = 1000
+        type(scene_t) :: scene
+        type(normal_sampler_t) :: sampler
+        type(mc_counts_t) :: counts
+        real(dp) :: v4(n), e(n)
+        real(qp) :: p_out, expected, se
+        integer :: stat
+        character(len=200) :: msg
+        call scene_init(scene, stat, msg)
+        call sampler%seed(99, stat, msg)
+        call monte_carlo_v4(sampler, scene, 0.95_qp, 0.1_qp, v4, counts, stat, msg, e)
+        call sampler%release()
+        call check(error, stat == status_normal, "refused: "//trim(msg))
+        p_out = real(normal_mass_outside_unit(0.95_qp, 0.1_qp), qp)
+        expected = n*p_out/(1.0_qp - p_out)
+        se = sqrt(n*p_out)/(1.0_qp - p_out)
+        call check(error, counts%redraws > 0, "no redraws counted")
+        call check(error, abs(counts%redraws - expected) <= k_se*se, "redraws " &
+            //str(real(counts%redraws, qp))//", expected "//str(expected))
+        call check(error, all(e >= 0.0_dp .and. e <= 1.0_dp), "a sample of e left [0, 1]")
+        call check(error, counts%runs == n, "runs /= n")
+        call check(error, all(v4 > 0.0_dp .and. v4 <= 1.0_dp), "v4 outside (0, v0]")
+    end subroutine test_redraw_rule
+
+    !> An unseeded sampler, a law with under 10 % of its mass in [0, 1],
+    !> sd <= 0 and a wrong size of e_samples are refused with a message naming
+    !> the input.
+    subroutine test_refusals(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(scene_t) :: scene
+        type(normal_sampler_t) :: sampler
+        type(mc_counts_t) :: counts
+        real(dp) :: v4(10), e(9)
+        integer :: stat
+        character(len=200) :: msg
+        call scene_init(scene, stat, msg)
+        call monte_carlo_v4(sampler, scene, 0.5_qp, 0.05_qp, v4, counts, stat, msg)
+        call check(error, stat == status_invalid .and. index(msg, "sampler") > 0, &
+            "unseeded sampler not refused: "//trim(msg))
+        call sampler%seed(1, stat, msg)
+        call check(error, sampler%seeded(), "seeded sampler reports unseeded")
+        call monte_carlo_v4(sampler, scene, 5.0_qp, 0.05_qp, v4, counts, stat, msg)
+        call check(error, stat == status_invalid .and. index(msg, "mean = 5") > 0, &
+            "mean 5 not refused: "//trim(msg))
+        call monte_carlo_v4(sampler, scene, 0.5_qp, 0.0_qp, v4, counts, stat, msg)
+        call check(error, stat == status_invalid .and. index(msg, "sd = 0") > 0, &
+            "sd 0 not refused: "//trim(msg))
+        call monte_carlo_v4(sampler, scene, 0.5_qp, 0.05_qp, v4, counts, stat, msg, e)
+        call check(error, stat == status_invalid .and. index(msg, "e_samples") > 0, &
+            "short e_samples not refused: "//trim(msg))
+        call sampler%release()
+        call check(error, .not. sampler%seeded(), "released sampler reports seeded")
+    end subroutine test_refusals
+
+    !> 400 runs of the definition's row: each v4 is the closed form rounded to
+    !> a double (inside the region of one impact, e > 0.27), and the mean lies
+    !> within k_se standard errors of the exact mean. Cutting the stream in two
+    !> calls gives the same samples as one call.
+    subroutine test_small_mc(error)
+        type(error_t), allocatable, intent(out) :: error
+        integer, parameter :: n = 400
+        type(scene_t) :: scene
+        type(normal_sampler_t) :: sampler
+        type(mc_counts_t) :: counts
+        real(dp) :: v4(n), e(n), v4_cut(n)
+        real(qp) :: mean, sd, exact_mean, exact_sd
+        integer :: i, stat
+        character(len=200) :: msg
+        call scene_init(scene, stat, msg)
+        call check(error, cubic_law_applies(scene), "definition's row has no cubic law")
+        call sampler%seed(4242, stat, msg)
+        call monte_carlo_v4(sampler, scene, m_def, s_def, v4, counts, stat, msg, e)
+        call check(error, stat == status_normal, "refused: "//trim(msg))
+        do i = 1, n
+            if (e(i) <= 0.27_dp) cycle
+            call check(error, v4(i) == real(cubic_law_v4(real(e(i), qp), 1.0_qp), dp), &
+                "v4 /= closed form at e = "//str(e(i)))
+        end do
+        call sample_moments(v4, mean, sd)
+        exact_mean = cubic_law_mean(m_def, s_def, 1.0_qp)
+        exact_sd = cubic_law_sd(m_def, s_def, 1.0_qp)
+        call check(error, abs(mean - exact_mean) <= k_se*exact_sd/sqrt(real(n, qp)), &
+            "mean "//str(mean)//" vs exact "//str(exact_mean))
+        call check(error, counts%collapsed == 0 .and. counts%incomplete == 0, &
+            "unexpected collapsed or incomplete runs")
+
+        call sampler%seed(4242, stat, msg)
+        call monte_carlo_v4(sampler, scene, m_def, s_def, v4_cut(:137), counts, stat, msg)
+        call monte_carlo_v4(sampler, scene, m_def, s_def, v4_cut(138:), counts, stat, msg)
+        call sampler%release()
+        call check(error, all(v4_cut == v4), "stream cut in two calls differs")
+    end subroutine test_small_mc
+
+    !> The bound of the region where sphere 4 is struck once agrees with
+    !> 2 - sqrt(3) (observed, the study's check); a bracket without a change is
+    !> refused; other rows have no cubic law.
+    subroutine test_single_impact_bound(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(scene_t) :: scene
+        real(qp) :: bound
+        integer :: stat
+        character(len=200) :: msg
+        call scene_init(scene, stat, msg)
+        call single_impact_bound(scene, 0.2_qp, 1.0_qp, bound, stat, msg)
+        call check(error, stat == status_normal, "refused: "//trim(msg))
+        call check(error, abs(bound - (2.0_qp - sqrt(3.0_qp))) <= 8*eps_q, &
+            "bound "//str(bound))
+        call single_impact_bound(scene, 0.5_qp, 1.0_qp, bound, stat, msg)
+        call check(error, stat == status_invalid .and. index(msg, "e_lo") > 0, &
+            "bracket without a change not refused")
+        call scene_init(scene, stat, msg, masses=[1.0_qp, 2.0_qp, 1.0_qp, 1.0_qp])
+        call check(error, .not. cubic_law_applies(scene), "unequal masses: no cubic law")
+        call scene_init(scene, stat, msg, p=5)
+        call check(error, .not. cubic_law_applies(scene), "p = 5: no cubic law")
+    end subroutine test_single_impact_bound
+
+end module test_monte_carlo
