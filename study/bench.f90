@@ -9,6 +9,7 @@ program c12_bench
         scene_dp_t, run_dp_t, scene_sp_t, run_sp_t, scene_init, simulate, status_normal
     use sphere_row_args, only: get_args, take_key, parse_real, unused_arg, wants_help
     use sphere_row_output, only: open_table, tab, itoa, split_tabs
+    use sphere_row_monte_carlo, only: normal_sampler_t, mc_counts_t, monte_carlo_v4
     implicit none
     character(len=*), parameter :: name = "c12-bench"
     character(len=*), parameter :: tasks(6) = ["a1", "a2", "b1", "b2", "c1", "c2"]
@@ -22,7 +23,7 @@ program c12_bench
 
     call get_args(args)
     if (wants_help(args)) then
-        print "(a)", "usage: "//name//" [out=results] [min_seconds=0.3]", &
+        print "(a)", "usage: "//name//" [out=results] [min_seconds=0.1]", &
             "Times the engine in each precision kind (ns per collision) and collects", &
             "the wall time of each study program from OUT/timing/; writes OUT/bench.tsv."
         stop
@@ -31,7 +32,7 @@ program c12_bench
     out = "results"
     call take_key(args, used, "out", text, found)
     if (found) out = text
-    min_seconds = 0.3
+    min_seconds = 0.1
     call take_key(args, used, "min_seconds", text, found)
     if (found) then
         call parse_real("min_seconds", text, seconds, stat, msg)
@@ -55,6 +56,7 @@ program c12_bench
         call time_kind("real64", e_values(k))
         call time_kind("real32", e_values(k))
     end do
+    call time_monte_carlo()
     seconds = 0
     do i = 1, size(tasks)
         call study_time("c12-"//tasks(i), seconds)
@@ -116,6 +118,26 @@ contains
         write (unit, "(a, es10.3, a)") "engine."//kind_name//".collisions_per_second.e" &
             //trim(buf)//tab, real(collisions)/elapsed, tab//"1/s"//tab//"-"
     end subroutine time_kind
+
+    !> Wall time of the c2 Monte Carlo loop alone: 10^6 real(16) runs of the
+    !> definition's scene with e ~ N(0.5, 0.05) (target: 2 s on one core).
+    subroutine time_monte_carlo()
+        type(scene_t) :: scene
+        type(normal_sampler_t) :: sampler
+        type(mc_counts_t) :: counts
+        real(dp), allocatable :: v4(:)
+        integer(int64) :: c0, c1, rate
+        call scene_init(scene, stat, msg)
+        call sampler%seed(12, stat, msg)
+        allocate (v4(1000000))
+        call system_clock(c0, rate)
+        call monte_carlo_v4(sampler, scene, 0.5_qp, 0.05_qp, v4, counts, stat, msg)
+        call system_clock(c1)
+        call sampler%release()
+        write (unit, "(a, f0.3, a)") "c2.monte_carlo_seconds_1e6"//tab, &
+            real(c1 - c0)/real(rate), tab//"s"//tab//"10^6 samples in real(16), one core; "// &
+            "target 2 s"
+    end subroutine time_monte_carlo
 
     !> Wall time of one study program as recorded by the Makefile.
     subroutine study_time(program, total)
