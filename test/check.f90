@@ -3,12 +3,14 @@ program check
     use testsuite, only: run_tests
     use test_engine, only: collect_engine
     use test_cli, only: collect_cli
+    use test_methods, only: collect_methods
     implicit none
     integer :: passed, failed
     passed = 0
     failed = 0
     call run_tests("engine", collect_engine(), passed, failed)
     call run_tests("cli", collect_cli(), passed, failed)
+    call run_tests("methods", collect_methods(), passed, failed)
     print "(i0, ' passed, ', i0, ' failed')", passed, failed
     if (failed > 0) stop 1, quiet=.true.
 end program check
