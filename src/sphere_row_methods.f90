@@ -39,6 +39,9 @@ module sphere_row_methods
     !> (and, for the ODE method, its end tolerance) into the final velocities; a
     !> velocity error beyond this many such units makes its final state wrong.
     real(qp), parameter :: state_margin = 1.0e4_qp
+    !> The ODE method ends when no rate is below -tol*v0; the rates left over
+    !> can move each final velocity by a few times tol*v0, fewer than this many.
+    real(qp), parameter :: end_margin = 10.0_qp
 
     !> Insignificance tolerance of the reference, relative to the scene's
     !> scales: near a collapse the gaps shrink like the square of the rates, so
@@ -345,38 +348,52 @@ contains
         end select
     end function method_setting
 
-    !> One-word label for tables and plots, e.g. engine_dp, ode_rk8pd_1e-06,
-    !> stepping_1e-03.
+    !> One-word label for tables and plots, e.g. engine_dp, ode_rk8pd_1.0e-6,
+    !> stepping_1.0e-3, engine_dp_tol1.5e-154 (an engine with its own tol).
     pure function method_label(method) result(label)
         type(method_t), intent(in) :: method
         character(len=:), allocatable :: label
-        character(len=16) :: buf
-        integer :: j
         select case (method%id)
         case (method_engine, method_absolute)
             label = method_name(method)//"_"//kind_name(method%precision)
-            if (method%id == method_engine .and. method%tol >= 0.0_qp) then
-                write (buf, "(es8.1e2)") method%tol
-                label = label//"_tol"//trim(adjustl(buf))
-            end if
+            if (method%id == method_engine .and. method%tol >= 0.0_qp) &
+                label = label//"_tol"//short_str(method%tol)
         case default
-            write (buf, "(es8.1e2)") method_setting(method)
-            label = method_name(method)//"_"//trim(adjustl(buf))
+            label = method_name(method)//"_"//short_str(method_setting(method))
         end select
-        do j = 1, len(label)
-            if (label(j:j) == "E") label(j:j) = "e"
-        end do
     end function method_label
 
+    !> Two significant digits and the exponent, e.g. 1.0e-6: short enough for a
+    !> label, whatever the exponent's size.
+    pure function short_str(x) result(text)
+        real(qp), intent(in) :: x
+        character(len=:), allocatable :: text
+        character(len=32) :: buf
+        integer :: exponent
+        real(qp) :: mantissa
+        if (.not. (x > 0.0_qp)) then
+            write (buf, "(f0.1)") x
+        else
+            exponent = floor(log10(x))
+            mantissa = x/10.0_qp**exponent
+            if (nint(10*mantissa) >= 100) then
+                exponent = exponent + 1
+                mantissa = mantissa/10
+            end if
+            write (buf, "(f3.1, 'e', i0)") mantissa, exponent
+        end if
+        text = trim(buf)
+    end function short_str
+
     !> Largest final-velocity error [V] of a run that is still right, for the
-    !> scene speed v0 (see state_margin).
+    !> scene speed v0: state_margin roundoffs of the method's kind and, for the
+    !> ODE method, end_margin times its tolerance (the rates it leaves
+    !> unresolved at the end).
     pure real(qp) function method_v_tol(method, v0) result(v_tol)
         type(method_t), intent(in) :: method
         real(qp), intent(in) :: v0
-        real(qp) :: nominal
-        nominal = kind_epsilon(method%precision)
-        if (method%id == method_ode) nominal = max(nominal, method%tol)
-        v_tol = state_margin*nominal*v0
+        v_tol = state_margin*kind_epsilon(method%precision)*v0
+        if (method%id == method_ode) v_tol = max(v_tol, end_margin*method%tol*v0)
     end function method_v_tol
 
     pure real(qp) function kind_epsilon(precision) result(eps)
