@@ -12,6 +12,7 @@
 !> restarted. One number, `tol`, sets the integrator's local error, the event
 !> tolerance in time and the end criterion, all relative to the scene's scales.
 module sphere_row_continuous
+    use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
     use, intrinsic :: iso_c_binding, only: c_int, c_double, c_size_t, c_ptr, c_funptr, &
         c_null_ptr, c_null_funptr, c_funloc, c_loc, c_f_pointer, c_associated
     use sphere_row_kinds, only: dp, qp
@@ -296,7 +297,8 @@ contains
         dudt(1:p) = u(p + 1:2*p)
         dudt(p + 1:2*p) = 0.0_c_double
         status = gsl_success
-        if (t /= t) status = -1_c_int
+        ! A time that is not a number can only come from a broken step: fail it.
+        if (ieee_is_nan(t)) status = -1_c_int
     end function free_motion
 
 end module sphere_row_continuous

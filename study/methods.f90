@@ -6,7 +6,7 @@ program c12_methods
     use, intrinsic :: iso_fortran_env, only: error_unit, output_unit, int64, &
         compiler_version, compiler_options
     use sphere_row, only: sp, dp, xdp, qp, scene_t, scene_init, status_normal, &
-        status_collapsed, status_word, str
+        status_word, str
     use sphere_row_args, only: get_args, split_key_value, parse_int, parse_real, wants_help
     use sphere_row_outcome, only: outcome_t, comparison_t, compare_outcomes, classify, &
         category_word
@@ -34,6 +34,7 @@ program c12_methods
     type(method_t), allocatable :: methods(:)
     logical, allocatable :: in_map(:)
     real(qp), allocatable :: scenes(:)
+    logical, allocatable :: in_costs(:)
     integer :: repeats, points, stat, i, steps_in
     integer(int64) :: max_steps
     real(qp) :: min_time
@@ -68,7 +69,7 @@ program c12_methods
                 call fail("points = "//value//": allowed 8 <= points <= 100000")
         case ("min_time")
             call parse_real(key, value, min_time, stat, msg)
-            if (stat == status_normal .and. .not. (min_time >= 0.0_qp .and. min_time <= 60)) &
+            if (stat == status_normal .and. .not. (min_time >= 0.0_qp .and. min_time <= 60.0_qp)) &
                 call fail("min_time = "//value//": allowed 0 <= min_time <= 60 (seconds)")
         case ("max_steps")
             call parse_int(key, value, steps_in, stat, msg)
@@ -84,7 +85,9 @@ program c12_methods
     if (stat /= 0) call fail("out = "//out_dir//": the directory cannot be created")
 
     call method_list()
+    ! The work-precision scenes; the costs table takes e = 0.2 and e = 0.172.
     scenes = [0.2_qp, e_crit + 1.0e-2_qp, e_crit + 1.0e-3_qp, 0.172_qp, e_crit + 1.0e-4_qp]
+    in_costs = [.true., .false., .false., .true., .false.]
     call work_precision()
     call lap("work-precision and costs")
     call stability()
@@ -157,7 +160,8 @@ contains
                 cmp = compare_outcomes(ref, run)
                 ! One number per run for the chart: velocities in units of v0,
                 ! times in units of L/v0 (L = max(d, a) = 1 here).
-                err = max(cmp%v_error/scene%v0, cmp%t_error*scene%v0/max(scene%d, maxval(scene%a)))
+                err = max(cmp%v_error/scene%v0, &
+                    cmp%t_error*scene%v0/max(scene%d, maxval(scene%a)))
                 call time_runs(methods(m), seconds, batches, runs)
                 write (unit, "(a)") itoa(s)//tab//str(scenes(s))//tab//str(scenes(s) - e_crit)//tab &
                     //method_label(methods(m))//tab//method_name(methods(m))//tab &
@@ -168,7 +172,7 @@ contains
                     //str(cmp%v_error)//tab//str(cmp%t_error)//tab//str(err)//tab &
                     //str(run%min_gap)//tab//itoa64(run%steps)//tab//status_word(run%status) &
                     //tab//category_word(classify(ref, run, method_v_tol(methods(m), scene%v0)))
-                if (scenes(s) == 0.2_qp .or. scenes(s) == 0.172_qp) then
+                if (in_costs(s)) then
                     write (unit_cost, "(a)") str(scenes(s))//tab//method_label(methods(m))//tab &
                         //method_name(methods(m))//tab//kind_name(methods(m)%precision)//tab &
                         //str(method_setting(methods(m)))//tab//itoa(ref%n)//tab//itoa(run%n) &
@@ -308,9 +312,9 @@ contains
     !> Report the CPU time of the part just finished.
     subroutine lap(part)
         character(len=*), intent(in) :: part
-        real, save :: last = -1.0
+        real, save :: last = -1.0e0
         real :: now
-        if (last < 0.0) last = clock_start
+        if (last < 0.0e0) last = clock_start
         call cpu_time(now)
         write (output_unit, "(a, f0.2, a)") name//": "//part//": ", now - last, " s"
         last = now
@@ -334,28 +338,38 @@ contains
 
     !> Median CPU time per run of a prepared method: `batches` batches of
     !> `runs` runs each, so that the whole takes about min_time; a run slower
-    !> than min_time is timed once.
+    !> than min_time is timed once. The batch size is calibrated by doubling
+    !> the number of runs until they take a measurable part of a batch, so that
+    !> a coarse clock cannot make a fast run look free.
     subroutine time_runs(method, seconds, batches, runs)
         type(method_t), intent(inout) :: method
         real(qp), intent(out) :: seconds
         integer, intent(out) :: batches, runs
         type(outcome_t) :: run
         real(dp), allocatable :: samples(:)
-        real(dp) :: t0, t1, single
+        real(dp) :: t0, t1, single, batch_time
         integer :: b, j
+        integer, parameter :: max_runs = 2**24
+        batch_time = real(min_time, dp)/repeats
         call method_run(method, run)
-        call cpu_time(t0)
-        call method_run(method, run)
-        call cpu_time(t1)
-        single = max(t1 - t0, 1.0e-9_dp)
-        if (single >= min_time) then
+        runs = 1
+        do
+            call cpu_time(t0)
+            do j = 1, runs
+                call method_run(method, run)
+            end do
+            call cpu_time(t1)
+            if (t1 - t0 >= 0.25_dp*batch_time .or. runs >= max_runs) exit
+            runs = 2*runs
+        end do
+        single = (t1 - t0)/runs
+        if (runs == 1 .and. single >= real(min_time, dp)) then
             seconds = single
             batches = 1
-            runs = 1
             return
         end if
         batches = repeats
-        runs = max(1, ceiling(real(min_time, dp)/repeats/single))
+        runs = max(1, min(max_runs, ceiling(batch_time/max(single, tiny(1.0_dp)))))
         allocate (samples(batches))
         do b = 1, batches
             call cpu_time(t0)

@@ -34,9 +34,10 @@ contains
             new_unittest("reference_counts", test_reference_counts), &
             new_unittest("compare_and_classify", test_classify), &
             new_unittest("engine_kinds_via_dispatch", test_engine_kinds), &
-            new_unittest("absolute_dp_e05", test_absolute_dp), &
+            new_unittest("absolute_dp_e03", test_absolute_dp), &
             new_unittest("absolute_qp_e02", test_absolute_qp), &
             new_unittest("absolute_budget", test_absolute_budget), &
+            new_unittest("absolute_negative_gap", test_absolute_negative_gap), &
             new_unittest("ode_rk8pd_e02", test_ode_rk8pd), &
             new_unittest("ode_rkf45_e05", test_ode_rkf45), &
             new_unittest("ode_end_criterion", test_ode_end), &
@@ -207,6 +208,26 @@ contains
             "absolute dp: budget of 5 collisions not honoured")
         call check(error, run%min_gap <= 0.0_qp, "min_gap must be <= 0")
     end subroutine test_absolute_budget
+
+    !> A pair the absolute method takes as not approaching (its rate is below
+    !> tol*v0) keeps closing while another pair travels towards its impact: the
+    !> overlap is seen and reported. Hand-built: e = 0.5, gaps 1, 0, 5, tol = 0.1;
+    !> after the impacts 1-2 (t = 1) and at once 2-3, spheres 1 and 2 touch and
+    !> close at 1/16 v0, while 3 needs 5/(9/16) L/v0 to reach 4: the overlap is
+    !> 5/9 L when 3-4 collide.
+    subroutine test_absolute_negative_gap(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(scene_dp_t) :: scene
+        type(outcome_t) :: run
+        integer :: stat
+        character(len=200) :: msg
+        call scene_init(scene, stat, msg, e=0.5_dp, gaps=[1.0_dp, 0.0_dp, 5.0_dp], tol=0.1_dp)
+        call simulate_absolute_dp(scene, run, record=.true.)
+        call check(error, run%status == status_negative_gap .and. run%n == 3, &
+            "absolute dp: overlap not reported, status "//itoa(run%status)//", n = "//itoa(run%n))
+        call check(error, abs(run%min_gap + 5.0_qp/9) <= 64*eps_dp, &
+            "absolute dp: overlap "//str(run%min_gap)//", expected -5/9")
+    end subroutine test_absolute_negative_gap
 
     !> GSL rk8pd at tol = 1e-10, e = 0.2: the sequence of 13 is right; each
     !> impact is located to 1e-10 L/v0 and the errors add up over the run, so
