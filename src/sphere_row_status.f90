@@ -6,6 +6,7 @@ module sphere_row_status
     implicit none
     private
     public :: status_normal, status_collapsed, status_max_collisions, status_invalid
+    public :: status_negative_gap, status_budget, status_solver_failed
     public :: event_start, event_collision, event_collapse
     public :: status_word
 
@@ -20,6 +21,15 @@ module sphere_row_status
     integer, parameter :: status_max_collisions = 2
     !> The scene was refused; the message names the parameter at fault.
     integer, parameter :: status_invalid = 3
+    !> A method other than the engine saw two spheres overlap by more than its
+    !> own resolution (a negative gap) and stopped: its event times are no longer
+    !> meaningful.
+    integer, parameter :: status_negative_gap = 4
+    !> A time or step budget ran out before the end (time stepping, ODE
+    !> integration): the state returned is the one reached.
+    integer, parameter :: status_budget = 5
+    !> The ODE solver (GSL) returned an error; the message says which.
+    integer, parameter :: status_solver_failed = 6
 
     !> Event kinds of the optional event record.
     integer, parameter :: event_start = 0, event_collision = 1, event_collapse = 2
@@ -39,6 +49,12 @@ contains
             word = "max_collisions"
         case (status_invalid)
             word = "invalid"
+        case (status_negative_gap)
+            word = "negative_gap"
+        case (status_budget)
+            word = "budget_exhausted"
+        case (status_solver_failed)
+            word = "solver_failed"
         case default
             word = "unknown"
         end select
