@@ -29,13 +29,18 @@ B2 := $(RESULTS)/b2_velocities.tsv $(RESULTS)/b2_closed_forms.tsv $(RESULTS)/b2_
 C1 := $(RESULTS)/c1_iterations.tsv $(RESULTS)/c1_starts.tsv $(RESULTS)/c1_answers.tsv
 C2 := $(RESULTS)/c2_ecdf.tsv $(RESULTS)/c2_histogram.tsv $(RESULTS)/c2_convergence.tsv \
       $(RESULTS)/c2_answers.tsv
-TABLES := $(A1) $(A2) $(B1) $(B2) $(C1) $(C2)
+METHODS := $(RESULTS)/methods_work_precision.tsv $(RESULTS)/methods_stability.tsv \
+      $(RESULTS)/methods_min_distance.tsv $(RESULTS)/methods_costs.tsv \
+      $(RESULTS)/methods_platform.tsv
+TABLES := $(A1) $(A2) $(B1) $(B2) $(C1) $(C2) $(METHODS)
 ANSWERS := $(filter %_answers.tsv,$(TABLES))
 
 FIGURES := a1_paths b1_n b1_critical b2_velocities c1_secant c2_ecdf c2_histogram \
            c2_convergence
-PNG := $(FIGURES:%=$(RESULTS)/%.png)
-SVG := $(FIGURES:%=$(RESULTS)/%.svg)
+PNG := $(FIGURES:%=$(RESULTS)/%.png) $(RESULTS)/methods_work_precision.png \
+       $(RESULTS)/methods_stability.png
+SVG := $(FIGURES:%=$(RESULTS)/%.svg) $(RESULTS)/methods_work_precision.svg \
+       $(RESULTS)/methods_stability.svg
 
 .PHONY: all help prereqs test study tables figures bench check-results clean
 
@@ -90,6 +95,8 @@ $(C1) &: $(BUILD_STAMP)
 	$(call study_run,c12-c1)
 $(C2) &: $(BUILD_STAMP)
 	$(call study_run,c12-c2)
+$(METHODS) &: $(BUILD_STAMP)
+	$(call study_run,c12-methods)
 
 $(RESULTS)/answers.tsv $(RESULTS)/summary.md &: $(ANSWERS) $(BUILD_STAMP)
 	$(BIN)/c12-summary out=$(RESULTS)
@@ -111,6 +118,14 @@ $(RESULTS)/c1_secant.png $(RESULTS)/c1_secant.svg: $(C1)
 $(RESULTS)/c2_ecdf.png $(RESULTS)/c2_ecdf.svg: $(C2)
 $(RESULTS)/c2_histogram.png $(RESULTS)/c2_histogram.svg: $(C2)
 $(RESULTS)/c2_convergence.png $(RESULTS)/c2_convergence.svg: $(C2)
+
+# the methods' scripts write both formats in one run
+$(RESULTS)/methods_work_precision.png $(RESULTS)/methods_work_precision.svg &: \
+		study/work_precision.gp $(METHODS)
+	gnuplot -e "dir='$(RESULTS)'; out='$(RESULTS)/methods_work_precision'" $<
+$(RESULTS)/methods_stability.png $(RESULTS)/methods_stability.svg &: \
+		study/stability_map.gp $(METHODS)
+	gnuplot -e "dir='$(RESULTS)'; out='$(RESULTS)/methods_stability'" $<
 
 check-results: prereqs ## regenerate the tables in build/ and compare with results/
 	rm -rf build/check

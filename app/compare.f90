@@ -5,8 +5,10 @@
 !> equal. A real must agree to the precision it was printed with: printed with
 !> D significant digits, the tolerance is 10^(4-D) relative to the largest
 !> magnitude of its column (so real(16) columns agree to ~1e-30, real64 ones to
-!> ~1e-12). Timing columns (a header with [s] or [ns]) and the timing tables
-!> bench.tsv and methods_costs.tsv are skipped: they are measurements.
+!> ~1e-12). Timing columns (a header with [s] or [ns], and the repeat counts
+!> `batches`, `runs_per_batch` chosen from timings) and the tables of timings
+!> and of the machine (bench.tsv, methods_costs.tsv, methods_platform.tsv) are
+!> skipped: they are measurements.
 program tsv_compare
     use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
     use sphere_row, only: qp
@@ -46,7 +48,8 @@ program tsv_compare
     do
         read (unit, "(a)", iostat=ios) file
         if (ios /= 0) exit
-        if (trim(file) == "bench.tsv" .or. trim(file) == "methods_costs.tsv") cycle
+        if (trim(file) == "bench.tsv" .or. trim(file) == "methods_costs.tsv" .or. &
+            trim(file) == "methods_platform.tsv") cycle
         call compare_file(trim(file))
         n_files = n_files + 1
     end do
@@ -100,7 +103,7 @@ contains
             end if
             do j = 1, size(a_fields)
                 if (j <= size(header)) then
-                    if (index(header(j), "[s]") > 0 .or. index(header(j), "[ns]") > 0) cycle
+                    if (is_timing(header(j))) cycle
                 end if
                 call as_real(a_fields(j), x, xa, digits)
                 call as_real(b_fields(j), y, xb, digits)
@@ -116,6 +119,13 @@ contains
             end do
         end do
     end subroutine compare_file
+
+    !> A column that holds a measurement of time, or a count chosen from one.
+    pure logical function is_timing(head)
+        character(len=*), intent(in) :: head
+        is_timing = index(head, "[s]") > 0 .or. index(head, "[ns]") > 0 .or. &
+            trim(head) == "batches" .or. trim(head) == "runs_per_batch"
+    end function is_timing
 
     !> One differing field, on stderr (the first 20 only).
     subroutine report(text)

@@ -47,7 +47,7 @@ do for [fmt in "pngcairo svg"] {
         set terminal svg size 1600,800 font "Sans,11" enhanced background "white"
         set output out.".svg"
     }
-    set multiplot title "ARGESIM C12, issue 4: outcome of each method against the real128 " . \
+    set multiplot title "ARGESIM C12 methods: outcome of each method against the real128 " . \
         "reference, from e = 1 through e_c = 3 - 2{/Symbol \326}2 to e = 0 " . \
         "(p = 4, d = a = v_0 = 1)" font ",14"
 

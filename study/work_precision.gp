@@ -64,7 +64,7 @@ do for [fmt in "pngcairo svg"] {
         set terminal svg size 1800,1100 font "Sans,11" enhanced background "white"
         set output out.".svg"
     }
-    set multiplot layout 2,3 title "ARGESIM C12, issue 4: work-precision of four methods " . \
+    set multiplot layout 2,3 title "ARGESIM C12 methods: work-precision of four methods " . \
         "against the real128 reference (p = 4, d = a = v_0 = 1)" font ",15"
     do for [i=1:n_scenes] {
         stats file skip 1 using (column(c_scene) == i ? column(c_e) : NaN) nooutput
