@@ -64,10 +64,12 @@ figures: $(PNG) $(SVG) ## the study's figures only
 
 bench: $(RESULTS)/bench.tsv ## speed of the engine per precision and of the study
 
-# fpm does not see edits of the engine template: drop the four instantiations.
+# fpm does not see edits of an included template (src/*.inc): drop the objects
+# of every source that includes one, so that fpm compiles them again.
 $(INC_STAMP): $(wildcard src/*.inc)
 	@mkdir -p build
-	rm -f build/gfortran_*/sphere_row/src_sphere_row_engine_*
+	for f in $$(grep -l '^ *include "' src/*.f90); do \
+		rm -f build/gfortran_*/sphere_row/src_$$(basename $$f).o*; done
 	@touch $@
 
 $(BUILD_STAMP): $(SOURCES) $(INC_STAMP)
