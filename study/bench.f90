@@ -12,7 +12,8 @@ program c12_bench
     use sphere_row_monte_carlo, only: normal_sampler_t, mc_counts_t, monte_carlo_v4
     implicit none
     character(len=*), parameter :: name = "c12-bench"
-    character(len=*), parameter :: tasks(6) = ["a1", "a2", "b1", "b2", "c1", "c2"]
+    character(len=*), parameter :: tasks(7) = [character(len=7) :: "a1", "a2", "b1", &
+        "b2", "c1", "c2", "methods"]
     character(len=:), allocatable :: args(:), text, out
     character(len=300) :: msg
     logical, allocatable :: used(:)
@@ -57,12 +58,14 @@ program c12_bench
         call time_kind("real32", e_values(k))
     end do
     call time_monte_carlo()
+    call method_costs()
     seconds = 0
     do i = 1, size(tasks)
-        call study_time("c12-"//tasks(i), seconds)
+        call study_time("c12-"//trim(tasks(i)), seconds)
     end do
     write (unit, "(a, f0.3, a)") "study.total_seconds"//tab, seconds, tab//"s"//tab// &
-        "wall time of the six task programs of one make study, one after the other"
+        "wall time of the study programs (six tasks and the methods) of one make study, "// &
+        "one after the other"
     close (unit)
 
 contains
@@ -138,6 +141,46 @@ contains
             real(c1 - c0)/real(rate), tab//"s"//tab//"10^6 samples in real(16), one core; "// &
             "target 2 s"
     end subroutine time_monte_carlo
+
+    !> The cost of each method of c12-methods on the same scenes, copied from
+    !> its table so that bench.tsv holds every speed figure of the study.
+    subroutine method_costs()
+        character(len=4000) :: line
+        character(len=:), allocatable :: f(:), head(:)
+        integer :: u, ios, c_e, c_label, c_run, c_col, j
+        open (newunit=u, file=out//"/methods_costs.tsv", status="old", action="read", &
+            iostat=ios)
+        if (ios /= 0) return
+        read (u, "(a)", iostat=ios) line
+        call split_tabs(trim(line), head)
+        c_e = 0
+        c_label = 0
+        c_run = 0
+        c_col = 0
+        do j = 1, size(head)
+            if (head(j) == "e[1]") c_e = j
+            if (head(j) == "label") c_label = j
+            if (head(j) == "ns_per_run[ns]") c_run = j
+            if (head(j) == "ns_per_collision[ns]") c_col = j
+        end do
+        if (min(c_e, c_label, c_run, c_col) == 0) then
+            close (u)
+            return
+        end if
+        do
+            read (u, "(a)", iostat=ios) line
+            if (ios /= 0) exit
+            call split_tabs(trim(line), f)
+            if (size(f) < max(c_e, c_label, c_run, c_col)) cycle
+            write (unit, "(a)") "methods."//trim(f(c_label))//".ns_per_run"//tab// &
+                trim(f(c_run))//tab//"ns"//tab//"e = "//trim(f(c_e))// &
+                ", from methods_costs.tsv"
+            write (unit, "(a)") "methods."//trim(f(c_label))//".ns_per_collision"//tab// &
+                trim(f(c_col))//tab//"ns"//tab//"e = "//trim(f(c_e))// &
+                ", from methods_costs.tsv"
+        end do
+        close (u)
+    end subroutine method_costs
 
     !> Wall time of one study program as recorded by the Makefile.
     subroutine study_time(program, total)
