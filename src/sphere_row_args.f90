@@ -12,7 +12,7 @@ module sphere_row_args
     implicit none
     private
     public :: get_args, split_key_value, parse_real, parse_int, parse_reals, parse_flag
-    public :: scene_from_args, scene_help, unused_arg, wants_help, take_key
+    public :: scene_from_args, scene_help, unused_arg, wants_help, take_key, real_key, int_key
 
     !> Longest `masses` or `gaps` list a namelist file may hold.
     integer, parameter :: max_list = 100000
@@ -344,6 +344,70 @@ contains
         end do
     end subroutine take_key
 
+    !> The optional `key=value` among args read into x, which keeps its value
+    !> when the key is absent; a value outside [lo, hi] is refused with a
+    !> message naming `allowed` (default: lo <= key <= hi).
+    subroutine real_key(args, used, key, x, lo, hi, stat, msg, allowed)
+        character(len=*), intent(in) :: args(:), key
+        logical, intent(inout) :: used(:)
+        real(qp), intent(inout) :: x
+        real(qp), intent(in) :: lo, hi
+        integer, intent(out) :: stat
+        character(len=*), intent(out) :: msg
+        character(len=*), intent(in), optional :: allowed
+        character(len=:), allocatable :: text
+        logical :: found
+        real(qp) :: value
+        stat = status_normal
+        msg = ""
+        call take_key(args, used, key, text, found)
+        if (.not. found) return
+        call parse_real(key, text, value, stat, msg)
+        if (stat /= status_normal) return
+        if (.not. (value >= lo .and. value <= hi)) then
+            stat = status_invalid
+            if (present(allowed)) then
+                msg = key//" = "//text//": allowed "//allowed
+            else
+                msg = key//" = "//text//": allowed "//trim(rstr(lo))//" <= "//key//" <= " &
+                    //trim(rstr(hi))
+            end if
+            return
+        end if
+        x = value
+    end subroutine real_key
+
+    !> The optional integer `key=value` among args read into n, as real_key.
+    subroutine int_key(args, used, key, n, lo, hi, stat, msg)
+        character(len=*), intent(in) :: args(:), key
+        logical, intent(inout) :: used(:)
+        integer, intent(inout) :: n
+        integer, intent(in) :: lo, hi
+        integer, intent(out) :: stat
+        character(len=*), intent(out) :: msg
+        character(len=:), allocatable :: text
+        character(len=24) :: bounds
+        logical :: found
+        integer :: value
+        stat = status_normal
+        msg = ""
+        call take_key(args, used, key, text, found)
+        if (.not. found) return
+        call parse_int(key, text, value, stat, msg)
+        if (stat /= status_normal) return
+        if (value < lo .or. value > hi) then
+            stat = status_invalid
+            write (bounds, "(i0, ' <= ', a)") lo, key
+            msg = key//" = "//text//": allowed "//trim(bounds)
+            if (hi < huge(hi)) then
+                write (bounds, "(' <= ', i0)") hi
+                msg = trim(msg)//trim(bounds)
+            end if
+            return
+        end if
+        n = value
+    end subroutine int_key
+
     !> Message for the first argument that no key of the program took.
     pure subroutine unused_arg(args, used, allowed, stat, msg)
         character(len=*), intent(in) :: args(:)
@@ -408,7 +472,7 @@ contains
     pure function rstr(x) result(s)
         real(qp), intent(in) :: x
         character(len=48) :: s
-        write (s, "(g0)") x
+        write (s, "(g0)") real(x, kind(1.0d0))
     end function rstr
 
 end module sphere_row_args

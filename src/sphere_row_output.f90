@@ -4,7 +4,7 @@ module sphere_row_output
     use sphere_row_status, only: status_normal, status_invalid
     implicit none
     private
-    public :: open_table, write_answer, answer_header, tab, itoa, split_tabs
+    public :: open_table, write_answer, answer_header, tab, itoa, split_tabs, cpu_model
 
     !> The field separator.
     character(len=*), parameter :: tab = achar(9)
@@ -78,5 +78,25 @@ contains
             end if
         end do
     end subroutine split_tabs
+
+    !> The CPU model named in /proc/cpuinfo ("unknown" where there is none),
+    !> to describe the machine beside timings.
+    function cpu_model() result(model)
+        character(len=:), allocatable :: model
+        character(len=512) :: line
+        integer :: unit, ios
+        model = "unknown"
+        open (newunit=unit, file="/proc/cpuinfo", status="old", action="read", iostat=ios)
+        if (ios /= 0) return
+        do
+            read (unit, "(a)", iostat=ios) line
+            if (ios /= 0) exit
+            if (index(line, "model name") == 1) then
+                model = trim(adjustl(line(index(line, ":") + 1:)))
+                exit
+            end if
+        end do
+        close (unit)
+    end function cpu_model
 
 end module sphere_row_output

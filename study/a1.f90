@@ -7,7 +7,7 @@ program c12_a1
     use sphere_row, only: qp, dp, scene_t, run_t, event_log_t, scene_dp_t, run_dp_t, &
         scene_init, simulate, gaps_at, str, status_word, status_normal, event_collision, &
         event_collapse
-    use sphere_row_args, only: get_args, scene_from_args, take_key, parse_real, unused_arg, &
+    use sphere_row_args, only: get_args, scene_from_args, take_key, real_key, unused_arg, &
         wants_help, scene_help
     use sphere_row_output, only: open_table, write_answer, answer_header, tab, itoa
     implicit none
@@ -37,12 +37,8 @@ program c12_a1
     call take_key(args, used, "out", text, found)
     if (found) out = text
     t_max = 15.0_qp
-    call take_key(args, used, "t_max", text, found)
-    if (found) then
-        call parse_real("t_max", text, t_max, stat, msg)
-        if (stat /= status_normal) call fail(msg)
-        if (.not. t_max > 0) call fail("t_max = "//text//": allowed t_max > 0")
-    end if
+    call real_key(args, used, "t_max", t_max, tiny(1.0_qp), huge(1.0_qp), stat, msg, "t_max > 0")
+    if (stat /= status_normal) call fail(msg)
     call unused_arg(args, used, "out, t_max and the scene keys (see --help)", stat, msg)
     if (stat /= status_normal) call fail(msg)
 

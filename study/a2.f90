@@ -4,7 +4,7 @@ program c12_a2
     use, intrinsic :: iso_fortran_env, only: error_unit
     use sphere_row, only: qp, scene_t, run_t, simulate, str, status_word, status_normal, &
         status_collapsed
-    use sphere_row_args, only: get_args, scene_from_args, take_key, parse_real, unused_arg, &
+    use sphere_row_args, only: get_args, scene_from_args, take_key, real_key, unused_arg, &
         wants_help, scene_help
     use sphere_row_output, only: open_table, write_answer, answer_header, tab, itoa
     implicit none
@@ -31,20 +31,12 @@ program c12_a2
     call take_key(args, used, "out", text, found)
     if (found) out = text
     e_plastic = 0.1_qp
-    call take_key(args, used, "e_plastic", text, found)
-    if (found) then
-        call parse_real("e_plastic", text, e_plastic, stat, msg)
-        if (stat /= status_normal) call fail(msg)
-        if (.not. (e_plastic >= 0 .and. e_plastic <= 1)) &
-            call fail("e_plastic = "//text//": allowed 0 <= e_plastic <= 1")
-    end if
+    call real_key(args, used, "e_plastic", e_plastic, 0.0_qp, 1.0_qp, stat, msg)
+    if (stat /= status_normal) call fail(msg)
     spread_max = 1.0e-30_qp
-    call take_key(args, used, "spread_max", text, found)
-    if (found) then
-        call parse_real("spread_max", text, spread_max, stat, msg)
-        if (stat /= status_normal) call fail(msg)
-        if (.not. spread_max > 0) call fail("spread_max = "//text//": allowed spread_max > 0")
-    end if
+    call real_key(args, used, "spread_max", spread_max, tiny(1.0_qp), huge(1.0_qp), stat, msg, &
+        "spread_max > 0")
+    if (stat /= status_normal) call fail(msg)
     call unused_arg(args, used, "out, e_plastic, spread_max and the scene keys (see --help)", &
         stat, msg)
     if (stat /= status_normal) call fail(msg)

@@ -5,7 +5,7 @@ program c12_b1
     use, intrinsic :: iso_fortran_env, only: error_unit
     use sphere_row, only: qp, scene_t, run_t, event_log_t, simulate, str, status_word, &
         status_normal, status_collapsed
-    use sphere_row_args, only: get_args, scene_from_args, take_key, parse_real, parse_int, &
+    use sphere_row_args, only: get_args, scene_from_args, take_key, real_key, int_key, &
         unused_arg, wants_help, scene_help
     use sphere_row_output, only: open_table, write_answer, answer_header, tab, itoa
     use sphere_row_analysis, only: sequence_of, sequence_text, sequence_hash, tail_period, &
@@ -43,35 +43,19 @@ program c12_b1
     call take_key(args, used, "out", text, found)
     if (found) out = text
     n_scan = 2001
-    call take_key(args, used, "n_scan", text, found)
-    if (found) then
-        call parse_int("n_scan", text, n_scan, stat, msg)
-        if (stat /= status_normal) call fail(msg)
-        if (n_scan < 3) call fail("n_scan = "//text//": allowed n_scan >= 3")
-    end if
+    call int_key(args, used, "n_scan", n_scan, 3, huge(1), stat, msg)
+    if (stat /= status_normal) call fail(msg)
     resolution = 1.0e-12_qp
-    call take_key(args, used, "resolution", text, found)
-    if (found) then
-        call parse_real("resolution", text, resolution, stat, msg)
-        if (stat /= status_normal) call fail(msg)
-        if (.not. (resolution > 1.0e-30_qp .and. resolution < 0.1_qp)) &
-            call fail("resolution = "//text//": allowed 1e-30 < resolution < 0.1")
-    end if
+    call real_key(args, used, "resolution", resolution, 1.0e-30_qp, 0.1_qp, stat, msg, &
+        "1e-30 <= resolution <= 0.1")
+    if (stat /= status_normal) call fail(msg)
     n_bisect_max = 300
-    call take_key(args, used, "n_bisect_max", text, found)
-    if (found) then
-        call parse_int("n_bisect_max", text, n_bisect_max, stat, msg)
-        if (stat /= status_normal) call fail(msg)
-        if (n_bisect_max < 1) call fail("n_bisect_max = "//text//": allowed n_bisect_max >= 1")
-    end if
+    call int_key(args, used, "n_bisect_max", n_bisect_max, 1, huge(1), stat, msg)
+    if (stat /= status_normal) call fail(msg)
     tol_fine = 1.0e-4000_qp
-    call take_key(args, used, "tol_fine", text, found)
-    if (found) then
-        call parse_real("tol_fine", text, tol_fine, stat, msg)
-        if (stat /= status_normal) call fail(msg)
-        if (.not. (tol_fine > 1.0e-4900_qp .and. tol_fine < 1)) &
-            call fail("tol_fine = "//text//": allowed 1e-4900 < tol_fine < 1")
-    end if
+    call real_key(args, used, "tol_fine", tol_fine, 1.0e-4900_qp, 0.5_qp, stat, msg, &
+        "1e-4900 <= tol_fine <= 0.5")
+    if (stat /= status_normal) call fail(msg)
     call unused_arg(args, used, "out, n_scan, resolution, n_bisect_max, tol_fine and the "// &
         "scene keys (see --help)", stat, msg)
     if (stat /= status_normal) call fail(msg)
@@ -319,7 +303,7 @@ contains
             "  resolution=1e-12    width to which each change of n is bisected", &
             "  n_bisect_max=300    changes with larger n on both sides are not bisected", &
             "                      (with the default tol, n stays below ~150 anyway)", &
-            "  tol_fine=1e-4000    tolerance of the runs near e_crit, 1e-4900 < tol < 1", &
+            "  tol_fine=1e-4000    tolerance of the runs near e_crit, 1e-4900 <= tol <= 0.5", &
             scene_help()
     end subroutine usage
 

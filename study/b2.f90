@@ -5,7 +5,7 @@ program c12_b2
     use, intrinsic :: iso_fortran_env, only: error_unit
     use sphere_row, only: qp, scene_t, run_t, event_log_t, simulate, str, status_word, &
         status_normal
-    use sphere_row_args, only: get_args, scene_from_args, take_key, parse_int, unused_arg, &
+    use sphere_row_args, only: get_args, scene_from_args, take_key, int_key, unused_arg, &
         wants_help, scene_help
     use sphere_row_output, only: open_table, write_answer, answer_header, tab, itoa
     use sphere_row_analysis, only: sequence_of, sequence_text, sequence_hash, &
@@ -39,12 +39,8 @@ program c12_b2
     call take_key(args, used, "out", text, found)
     if (found) out = text
     n_grid = 1001
-    call take_key(args, used, "n_grid", text, found)
-    if (found) then
-        call parse_int("n_grid", text, n_grid, stat, msg)
-        if (stat /= status_normal) call fail(msg)
-        if (n_grid < 2) call fail("n_grid = "//text//": allowed n_grid >= 2")
-    end if
+    call int_key(args, used, "n_grid", n_grid, 2, huge(1), stat, msg)
+    if (stat /= status_normal) call fail(msg)
     call unused_arg(args, used, "out, n_grid and the scene keys (see --help)", stat, msg)
     if (stat /= status_normal) call fail(msg)
 

@@ -8,7 +8,7 @@ program c12_bench
     use sphere_row, only: qp, xdp, dp, sp, scene_t, run_t, scene_xdp_t, run_xdp_t, &
         scene_dp_t, run_dp_t, scene_sp_t, run_sp_t, scene_init, simulate, status_normal
     use sphere_row_args, only: get_args, take_key, parse_real, unused_arg, wants_help
-    use sphere_row_output, only: open_table, tab, itoa, split_tabs
+    use sphere_row_output, only: open_table, tab, itoa, split_tabs, cpu_model
     use sphere_row_monte_carlo, only: normal_sampler_t, mc_counts_t, monte_carlo_v4
     implicit none
     character(len=*), parameter :: name = "c12-bench"
@@ -204,24 +204,6 @@ contains
         write (unit, "(a)") "study."//program//".seconds"//tab//trim(f(2))//tab//"s"//tab// &
             "wall time of its last run by make"
     end subroutine study_time
-
-    function cpu_model() result(model)
-        character(len=:), allocatable :: model
-        character(len=500) :: line
-        integer :: u, ios
-        model = "unknown"
-        open (newunit=u, file="/proc/cpuinfo", status="old", action="read", iostat=ios)
-        if (ios /= 0) return
-        do
-            read (u, "(a)", iostat=ios) line
-            if (ios /= 0) exit
-            if (index(line, "model name") == 1) then
-                model = trim(adjustl(line(index(line, ":") + 1:)))
-                exit
-            end if
-        end do
-        close (u)
-    end function cpu_model
 
     subroutine fail(text)
         character(len=*), intent(in) :: text

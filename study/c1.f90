@@ -3,7 +3,7 @@
 program c12_c1
     use, intrinsic :: iso_fortran_env, only: error_unit
     use sphere_row, only: qp, scene_t, run_t, event_log_t, simulate, str, status_normal
-    use sphere_row_args, only: get_args, scene_from_args, take_key, parse_real, parse_int, &
+    use sphere_row_args, only: get_args, scene_from_args, take_key, real_key, int_key, &
         unused_arg, wants_help, scene_help
     use sphere_row_output, only: open_table, write_answer, answer_header, tab, itoa
     use sphere_row_analysis, only: sequence_of, sequence_text
@@ -41,21 +41,21 @@ program c12_c1
     call take_key(args, used, "out", text, found)
     if (found) out = text
     target = 0.5_qp
-    call real_key("target", target, 0.0_qp, 1.0_qp)
+    call real_key(args, used, "target", target, 0.0_qp, 1.0_qp, stat, msg)
+    if (stat /= status_normal) call fail(msg)
     x0 = 0.5_qp
-    call real_key("x0", x0, 0.0_qp, 1.0_qp)
+    call real_key(args, used, "x0", x0, 0.0_qp, 1.0_qp, stat, msg)
+    if (stat /= status_normal) call fail(msg)
     x1 = 0.6_qp
-    call real_key("x1", x1, 0.0_qp, 1.0_qp)
+    call real_key(args, used, "x1", x1, 0.0_qp, 1.0_qp, stat, msg)
+    if (stat /= status_normal) call fail(msg)
     if (x0 == x1) call fail("x1 = "//str(x1)//": allowed x1 /= x0")
     f_tol = 1.0e-30_qp
-    call real_key("f_tol", f_tol, 1.0e-33_qp, 1.0_qp)
+    call real_key(args, used, "f_tol", f_tol, 1.0e-33_qp, 1.0_qp, stat, msg, "1e-33 <= f_tol <= 1")
+    if (stat /= status_normal) call fail(msg)
     max_iterations = 50
-    call take_key(args, used, "max_iterations", text, found)
-    if (found) then
-        call parse_int("max_iterations", text, max_iterations, stat, msg)
-        if (stat /= status_normal) call fail(msg)
-        if (max_iterations < 1) call fail("max_iterations = "//text//": allowed >= 1")
-    end if
+    call int_key(args, used, "max_iterations", max_iterations, 1, huge(1), stat, msg)
+    if (stat /= status_normal) call fail(msg)
     call unused_arg(args, used, "out, target, x0, x1, f_tol, max_iterations and the "// &
         "scene keys (see --help)", stat, msg)
     if (stat /= status_normal) call fail(msg)
@@ -129,18 +129,6 @@ contains
         call secant(residual, a, b, 0.0_qp, 1.0_qp, f_tol*scene%v0, &
             64*epsilon(1.0_qp), max_iterations, result)
     end subroutine solve
-
-    subroutine real_key(key, x, lo, hi)
-        character(len=*), intent(in) :: key
-        real(qp), intent(inout) :: x
-        real(qp), intent(in) :: lo, hi
-        call take_key(args, used, key, text, found)
-        if (.not. found) return
-        call parse_real(key, text, x, stat, msg)
-        if (stat /= status_normal) call fail(msg)
-        if (.not. (x >= lo .and. x <= hi)) &
-            call fail(key//" = "//text//": allowed "//str(lo)//" <= "//key//" <= "//str(hi))
-    end subroutine real_key
 
     subroutine fail(text)
         character(len=*), intent(in) :: text

@@ -15,6 +15,7 @@ program c12_c2
     use sphere_row, only: dp, qp, scene_t, run_t, simulate, str, real_str, status_normal
     use sphere_row_args, only: get_args, scene_from_args, split_key_value, parse_real, &
         parse_int, unused_arg, scene_help, wants_help
+    use sphere_row_output, only: itoa
     use sphere_row_monte_carlo, only: normal_sampler_t, mc_counts_t, monte_carlo_v4, &
         normal_mass_outside_unit, normal_cdf, normal_density, sample_moments, normal_quantile, &
         mean_ci_half_width, sort_values, sorted_quantile, ks_distance, cubic_law_applies, &
@@ -555,13 +556,6 @@ contains
         s = trim(adjustl(buf))
     end function fixed
 
-    pure function itoa(k) result(s)
-        integer, intent(in) :: k
-        character(len=:), allocatable :: s
-        character(len=16) :: buf
-        write (buf, "(i0)") k
-        s = trim(buf)
-    end function itoa
 
     pure function itoa64(k) result(s)
         integer(int64), intent(in) :: k

@@ -8,6 +8,7 @@ program c12_methods
     use sphere_row, only: sp, dp, xdp, qp, scene_t, scene_init, status_normal, &
         status_word, str
     use sphere_row_args, only: get_args, split_key_value, parse_int, parse_real, wants_help
+    use sphere_row_output, only: itoa, cpu_model
     use sphere_row_outcome, only: outcome_t, comparison_t, compare_outcomes, classify, &
         category_word
     use sphere_row_methods, only: method_t, new_method, reference_method, method_prepare, &
@@ -431,26 +432,6 @@ contains
         if (code /= status_normal) call fail(text)
     end subroutine prepare
 
-    !> The first "model name" of /proc/cpuinfo, or "unknown".
-    function cpu_model() result(model)
-        character(len=:), allocatable :: model
-        character(len=512) :: line
-        integer :: unit, ios, colon
-        model = "unknown"
-        open (newunit=unit, file="/proc/cpuinfo", status="old", action="read", iostat=ios)
-        if (ios /= 0) return
-        do
-            read (unit, "(a)", iostat=ios) line
-            if (ios /= 0) exit
-            if (index(line, "model name") == 1) then
-                colon = index(line, ":")
-                model = trim(adjustl(line(colon + 1:)))
-                exit
-            end if
-        end do
-        close (unit)
-    end function cpu_model
-
     !> One line on stderr, exit status 2, nothing written.
     subroutine fail(text)
         character(len=*), intent(in) :: text
@@ -503,13 +484,6 @@ contains
         end if
     end function distance_str
 
-    pure function itoa(i) result(s)
-        integer, intent(in) :: i
-        character(len=:), allocatable :: s
-        character(len=16) :: buf
-        write (buf, "(i0)") i
-        s = trim(buf)
-    end function itoa
 
     pure function itoa64(i) result(s)
         integer(int64), intent(in) :: i
