@@ -25,11 +25,11 @@ program c12_b1
     integer :: stat, unit, j, n_scan, n_bisect_max, n_delta, n_boundaries, period, k
     integer :: n_intervals, n_fit, iterations, stat_c
     real(qp) :: resolution, tol_fine, e_lo, e_hi, e_c, e_c_sim, closed, lo, hi, mid
-    real(qp) :: sx, sy, sxx, sxy, slope, intercept, delta, e_quasi
-    real(qp), allocatable :: e_scan(:), boundaries(:), deltas(:)
-    integer, allocatable :: n_scan_runs(:), status_scan(:), n_delta_runs(:), status_delta(:)
+    real(qp) :: sx, sy, sxx, sxy, slope, intercept, e_quasi, delta
+    real(qp), allocatable :: e_scan(:), boundaries(:)
+    integer, allocatable :: n_scan_runs(:), status_scan(:)
     integer(8), allocatable :: class_scan(:)
-    integer(8) :: class_lo, class_hi
+    integer(8) :: class_mid
 
     call get_args(args)
     if (wants_help(args)) then
@@ -85,7 +85,7 @@ program c12_b1
     if (stat /= status_normal) call fail(msg)
     do j = 1, n_scan
         write (unit, "(a)") str(e_scan(j))//tab//itoa(n_scan_runs(j))//tab// &
-            status_word(status_scan(j))//tab//i8toa(class_scan(j))
+            status_word(status_scan(j))//tab//itoa(class_scan(j))
     end do
     close (unit)
 
@@ -107,7 +107,7 @@ program c12_b1
             hi = boundaries(j + 1)
         end if
         mid = 0.5_qp*(lo + hi)
-        call classify(mid, class_lo)
+        call classify(mid, class_mid)
         if (run%status == status_collapsed) then
             e_quasi = max(e_quasi, hi)
             write (unit, "(a)") str(lo)//tab//str(hi)//tab//str(hi - lo)//tab// &
@@ -162,7 +162,6 @@ program c12_b1
 
     ! 5. n against the distance to e_c, with the fine tolerance
     n_delta = 25
-    allocate (deltas(n_delta), n_delta_runs(n_delta), status_delta(n_delta))
     call open_table(out, "b1_critical.tsv", "delta=e-e_crit"//tab//"e"//tab//"collisions" &
         //tab//"status"//tab//"collisions*sqrt(delta)", unit, stat, msg)
     if (stat /= status_normal) call fail(msg)
@@ -172,23 +171,21 @@ program c12_b1
     sxy = 0
     n_fit = 0
     do k = 1, n_delta
-        deltas(k) = 10.0_qp**(-1.0_qp - 6.0_qp*real(k - 1, qp)/real(n_delta - 1, qp))
+        delta = 10.0_qp**(-1.0_qp - 6.0_qp*real(k - 1, qp)/real(n_delta - 1, qp))
         if (e_c > 0) then
-            scene%e = e_c + deltas(k)
+            scene%e = e_c + delta
         else
-            scene%e = e_c_sim + deltas(k)
+            scene%e = e_c_sim + delta
         end if
         call simulate(scene, run)
-        n_delta_runs(k) = run%n
-        status_delta(k) = run%status
-        write (unit, "(a)") str(deltas(k))//tab//str(scene%e)//tab//itoa(run%n)//tab// &
-            status_word(run%status)//tab//str(run%n*sqrt(deltas(k)))
+        write (unit, "(a)") str(delta)//tab//str(scene%e)//tab//itoa(run%n)//tab// &
+            status_word(run%status)//tab//str(run%n*sqrt(delta))
         ! fit log n = intercept + slope log delta where the asymptote holds (n >= 200)
         if (run%status == status_normal .and. run%n >= 200) then
-            sx = sx + log(deltas(k))
+            sx = sx + log(delta)
             sy = sy + log(real(run%n, qp))
-            sxx = sxx + log(deltas(k))**2
-            sxy = sxy + log(deltas(k))*log(real(run%n, qp))
+            sxx = sxx + log(delta)**2
+            sxy = sxy + log(delta)*log(real(run%n, qp))
             n_fit = n_fit + 1
         end if
     end do
@@ -278,14 +275,6 @@ contains
             x(j + 1) = key
         end do
     end subroutine sort
-
-    pure function i8toa(i) result(s)
-        integer(8), intent(in) :: i
-        character(len=:), allocatable :: s
-        character(len=24) :: buf
-        write (buf, "(i0)") i
-        s = trim(buf)
-    end function i8toa
 
     subroutine fail(text)
         character(len=*), intent(in) :: text

@@ -86,22 +86,34 @@ contains
         integer(int64) :: c0, c1, rate, collisions, runs
         real :: elapsed
         character(len=32) :: buf
+        integer :: which
         call scene_init(s16, stat, msg, e=e)
         call scene_init(s10, stat, msg, e=real(e, xdp))
         call scene_init(s8, stat, msg, e=real(e, dp))
         call scene_init(s4, stat, msg, e=real(e, sp))
+        ! the kind is chosen once: no text comparison inside the timed loop
+        select case (kind_name)
+        case ("real128")
+            which = 16
+        case ("real80")
+            which = 10
+        case ("real64")
+            which = 8
+        case default
+            which = 4
+        end select
         collisions = 0
         runs = 0
         call system_clock(c0, rate)
         do
-            select case (kind_name)
-            case ("real128")
+            select case (which)
+            case (16)
                 call simulate(s16, r16)
                 collisions = collisions + r16%n
-            case ("real80")
+            case (10)
                 call simulate(s10, r10)
                 collisions = collisions + r10%n
-            case ("real64")
+            case (8)
                 call simulate(s8, r8)
                 collisions = collisions + r8%n
             case default

@@ -291,13 +291,13 @@ contains
             ", against the mean of the normal law.")
         call answer(unit, "c2.e_sd", str(e_sd), "Standard deviation of the sampled e", &
             "normal_sd", e_sd, sd, ", against that of the normal law.")
-        call answer(unit, "c2.redraws", itoa64(counts%redraws), "Normal draws outside" &
+        call answer(unit, "c2.redraws", itoa(counts%redraws), "Normal draws outside" &
             //" 0 <= e <= 1, discarded and drawn again (the law is truncated to [0,1])", &
             "expected_count", real(counts%redraws, qp), redraws_expected, &
             ", against n P(outside)/P(inside).")
-        call answer(unit, "c2.collapsed", itoa64(counts%collapsed), "Runs of the main" &
+        call answer(unit, "c2.collapsed", itoa(counts%collapsed), "Runs of the main" &
             //" sample that ended in the quasi-plastic case (collapse limit taken).")
-        call answer(unit, "c2.incomplete", itoa64(counts%incomplete), "Runs of the main" &
+        call answer(unit, "c2.incomplete", itoa(counts%incomplete), "Runs of the main" &
             //" sample stopped by max_collisions before their end.")
         if (exact) then
             call answer(unit, "c2.region_e_min", str(bound), "Smallest e above which" &
@@ -555,14 +555,5 @@ contains
         write (buf, "(f32.3)") x
         s = trim(adjustl(buf))
     end function fixed
-
-
-    pure function itoa64(k) result(s)
-        integer(int64), intent(in) :: k
-        character(len=:), allocatable :: s
-        character(len=24) :: buf
-        write (buf, "(i0)") k
-        s = trim(buf)
-    end function itoa64
 
 end program c12_c2

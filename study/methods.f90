@@ -171,7 +171,7 @@ contains
                     //tab//itoa(ref%n)//tab//yes_no(cmp%same_count)//tab &
                     //yes_no(cmp%same_sequence)//tab//itoa(cmp%n_matched)//tab &
                     //str(cmp%v_error)//tab//str(cmp%t_error)//tab//str(err)//tab &
-                    //str(run%min_gap)//tab//itoa64(run%steps)//tab//status_word(run%status) &
+                    //str(run%min_gap)//tab//itoa(run%steps)//tab//status_word(run%status) &
                     //tab//category_word(classify(ref, run, method_v_tol(methods(m), scene%v0)))
                 if (in_costs(s)) then
                     write (unit_cost, "(a)") str(scenes(s))//tab//method_label(methods(m))//tab &
@@ -333,7 +333,7 @@ contains
         write (unit, "(a)") "clock"//tab//"cpu_time (process CPU time), median over batches"
         write (unit, "(a)") "batches"//tab//itoa(repeats)
         write (unit, "(a)") "min_time[s]"//tab//str(real(min_time, dp))
-        write (unit, "(a)") "stepping_max_steps"//tab//itoa64(max_steps)
+        write (unit, "(a)") "stepping_max_steps"//tab//itoa(max_steps)
         close (unit)
     end subroutine platform
 
@@ -483,14 +483,5 @@ contains
             text = "nan"
         end if
     end function distance_str
-
-
-    pure function itoa64(i) result(s)
-        integer(int64), intent(in) :: i
-        character(len=:), allocatable :: s
-        character(len=24) :: buf
-        write (buf, "(i0)") i
-        s = trim(buf)
-    end function itoa64
 
 end program c12_methods

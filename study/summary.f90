@@ -43,7 +43,7 @@ program c12_summary
         "## All answers", "", &
         "| key | value | check | check value | difference |", "|---|---|---|---|---|"
     do i = 1, size(tasks)
-        call table_rows(tasks(i))
+        call answer_rows(tasks(i), "table")
     end do
     close (answers)
 
@@ -107,60 +107,45 @@ program c12_summary
 
 contains
 
-    !> Rows of one task's answer table into answers.tsv and the markdown table.
-    subroutine table_rows(task)
-        character(len=*), intent(in) :: task
-        character(len=:), allocatable :: f(:)
-        character(len=4000) :: line
-        integer :: u, ios
-        logical :: first
-        open (newunit=u, file=out//"/"//task//"_answers.tsv", status="old", action="read")
-        first = .true.
-        do
-            read (u, "(a)", iostat=ios) line
-            if (ios /= 0) exit
-            if (first) then
-                first = .false.
-                cycle
-            end if
-            call split_tabs(trim(line), f)
-            if (size(f) < 6) cycle
-            write (answers, "(a)") trim(f(1))//tab//trim(f(2))
-            write (md, "(a)") "| "//trim(f(1))//" | "//trim(f(2))//" | "//trim(f(3))//" | " &
-                //trim(f(4))//" | "//trim(f(5))//" |"
-        end do
-        close (u)
-    end subroutine table_rows
-
     !> A task's section: what was done and derived, its figures, and each
     !> answer with how it was obtained and checked.
     subroutine section(task, title, figures, text)
         character(len=*), intent(in) :: task, title, figures(:), text
-        character(len=:), allocatable :: f(:)
-        character(len=4000) :: line
-        integer :: u, ios, j
-        logical :: first
+        integer :: j
         write (md, "(a)") "", "## "//title, "", text, ""
         do j = 1, size(figures)
             if (len_trim(figures(j)) == 0) cycle
             write (md, "(a)") "![C12 "//task//": "//trim(figures(j))//"]("// &
                 trim(figures(j))//".png)", ""
         end do
+        call answer_rows(task, "list")
+    end subroutine section
+
+    !> Each row of one task's answer table, written in `form`: "table" into
+    !> answers.tsv and the markdown table of all answers, "list" as the
+    !> bullets of the task's section.
+    subroutine answer_rows(task, form)
+        character(len=*), intent(in) :: task, form
+        character(len=:), allocatable :: f(:)
+        character(len=4000) :: line
+        integer :: u, ios
         open (newunit=u, file=out//"/"//task//"_answers.tsv", status="old", action="read")
-        first = .true.
+        read (u, "(a)", iostat=ios) line
         do
             read (u, "(a)", iostat=ios) line
             if (ios /= 0) exit
-            if (first) then
-                first = .false.
-                cycle
-            end if
             call split_tabs(trim(line), f)
             if (size(f) < 6) cycle
-            write (md, "(a)") "- `"//trim(f(1))//"` = "//trim(f(2))//": "//trim(f(6))
+            if (form == "table") then
+                write (answers, "(a)") trim(f(1))//tab//trim(f(2))
+                write (md, "(a)") "| "//trim(f(1))//" | "//trim(f(2))//" | "//trim(f(3)) &
+                    //" | "//trim(f(4))//" | "//trim(f(5))//" |"
+            else
+                write (md, "(a)") "- `"//trim(f(1))//"` = "//trim(f(2))//": "//trim(f(6))
+            end if
         end do
         close (u)
-    end subroutine section
+    end subroutine answer_rows
 
     logical function exists(path)
         character(len=*), intent(in) :: path
