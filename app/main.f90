@@ -54,6 +54,7 @@ program sphere_row_main
     write (output_unit, "(a, 1x, a)") "status", status_word(run%status)
     if (run%collapses > 0) then
         write (output_unit, "(a, 1x, i0)") "collapses", run%collapses
+        write (output_unit, "(a, 1x, i0)") "closed_form_limits", run%closed_limits
         write (output_unit, "(a, 1x, i0, '-', i0)") "collapse_spheres", &
             run%collapse_first, run%collapse_last
         write (output_unit, "(a, 1x, a)") "collapse_t", str(run%collapse_t)

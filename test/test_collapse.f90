@@ -1,0 +1,238 @@
+!> Tests of the collapse limits taken in closed form: certified collision
+!> cycles and plastic cascades at one instant. Each compares with a closed
+!> form, with the fallback rule alone, or with the same run without limits.
+module test_collapse
+    use sphere_row, only: qp, scene_t, run_t, event_log_t, scene_init, simulate, &
+        kinetic_energy, momentum, status_normal, status_collapsed, status_max_collisions
+    use testsuite, only: error_t, unittest_t, new_unittest, check
+    implicit none
+    private
+    public :: collect_collapse
+
+    !> Unit roundoff of the working precision, the scale of every tolerance here.
+    real(qp), parameter :: eps = epsilon(1.0_qp)
+    !> Critical restitution of the struck row: p = 4 (3 - 2 sqrt 2) and the
+    !> three-sphere cycle (7 - 4 sqrt 3).
+    real(qp), parameter :: e_crit_4 = 3 - 2*sqrt(2.0_qp), e_crit_3 = 7 - 4*sqrt(3.0_qp)
+
+contains
+
+    !> The collapse tests.
+    function collect_collapse() result(tests)
+        type(unittest_t), allocatable :: tests(:)
+        tests = [ &
+            new_unittest("light_middle_sphere", test_light_middle), &
+            new_unittest("plastic_cascade_matches_fallback", test_plastic_cascade), &
+            new_unittest("plastic_unequal_masses", test_plastic_unequal), &
+            new_unittest("finite_counts_near_e_crit", test_near_critical), &
+            new_unittest("three_sphere_threshold", test_three_spheres), &
+            new_unittest("log_does_not_change_result", test_log_neutral), &
+            new_unittest("random_rows_finite_unchanged", test_random_rows) &
+            ]
+    end function collect_collapse
+
+    subroutine seed()
+        integer :: n
+        call random_seed(size=n)
+        call random_seed(put=[(4321 + 11*n, n=1, n)])
+    end subroutine seed
+
+    !> A light sphere between two heavy ones shuttles with rates shrinking by
+    !> about 1 - 2m/M per cycle; the cycle limit gives the common velocity
+    !> m1 v0 / sum(m) at once.
+    subroutine test_light_middle(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(scene_t) :: scene
+        type(run_t) :: run
+        real(qp), parameter :: light = 1.0e-5_qp, e_values(3) = [0.0_qp, 0.5_qp, 0.9_qp]
+        integer :: stat, i
+        character(len=200) :: msg
+        do i = 1, size(e_values)
+            call scene_init(scene, stat, msg, p=3, e=e_values(i), masses=[1.0_qp, light, 1.0_qp])
+            call simulate(scene, run)
+            call check(error, run%status == status_collapsed .and. run%n < 1000, &
+                "light middle sphere: no collapse within 1000 collisions")
+            if (allocated(error)) return
+            call check(error, all(abs(run%v - 1/(2 + light)) <= 1.0e-25_qp), &
+                "light middle sphere: velocities not 1/(2 + m)")
+            if (allocated(error)) return
+        end do
+    end subroutine test_light_middle
+
+    !> At e = 0 the cascade through touching spheres is pooled in closed form;
+    !> the fallback rule alone, run to the tolerance, reaches the same state.
+    subroutine test_plastic_cascade(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(scene_t) :: scene
+        type(run_t) :: fast, slow
+        real(qp) :: u(12)
+        integer :: stat, i, p
+        character(len=200) :: msg
+        call seed()
+        do i = 1, 40
+            call random_number(u)
+            p = 3 + int(6*u(1))
+            call scene_init(scene, stat, msg, p=p, e=0.0_qp, masses=0.5_qp + 1.5_qp*u(2:p + 1), &
+                gaps=merge(0.0_qp, u(3:p + 1), u(3:p + 1) < 0.4_qp))
+            call simulate(scene, fast)
+            scene%closed_form_limits = .false.
+            call simulate(scene, slow)
+            call check(error, fast%status == status_collapsed .and. &
+                slow%status /= status_max_collisions, "plastic cascade: status")
+            if (allocated(error)) return
+            call check(error, all(abs(fast%v - slow%v) <= 1.0e4_qp*eps), &
+                "plastic cascade: velocities differ from the fallback's")
+            if (allocated(error)) return
+            call check(error, fast%n <= slow%n, "plastic cascade: more collisions than before")
+            if (allocated(error)) return
+        end do
+    end subroutine test_plastic_cascade
+
+    !> e = 0, masses over six decades: momentum kept, energy not gained, no pair
+    !> closing at the end, and few collisions.
+    subroutine test_plastic_unequal(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(scene_t) :: scene
+        type(run_t) :: run
+        real(qp) :: u(21), v0(20)
+        integer :: stat, i, p
+        character(len=200) :: msg
+        call seed()
+        do i = 1, 200
+            call random_number(u)
+            p = 2 + int(19*u(1))
+            call scene_init(scene, stat, msg, p=p, e=0.0_qp, masses=1.0e3_qp**(2*u(2:p + 1) - 1))
+            call simulate(scene, run)
+            v0 = 0.0_qp
+            v0(1) = 1.0_qp
+            call check(error, run%status == status_normal .or. run%status == status_collapsed, &
+                "e = 0, unequal masses: run did not end")
+            if (allocated(error)) return
+            call check(error, abs(momentum(scene, run%v) - scene%m(1)) <= &
+                1.0e3_qp*eps*maxval(scene%m), "e = 0: momentum")
+            call check(error, kinetic_energy(scene, run%v) <= &
+                kinetic_energy(scene, v0(:p))*(1 + 1.0e3_qp*eps), "e = 0: energy gained")
+            call check(error, all(run%dy >= -scene%tol*scene%v0), "e = 0: a pair still closing")
+            call check(error, run%n <= 4*p*p, "e = 0: too many collisions")
+            if (allocated(error)) return
+        end do
+    end subroutine test_plastic_unequal
+
+    !> Just above e_crit the run is finite; with a tolerance far below any
+    !> rate it keeps its exact count whether closed-form limits are on or off
+    !> (115 collisions at e = 0.172).
+    subroutine test_near_critical(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(scene_t) :: scene
+        type(run_t) :: with, without
+        real(qp), parameter :: above(3) = [1.0e-3_qp, 1.0e-5_qp, 1.0e-7_qp]
+        integer :: stat, i
+        character(len=200) :: msg
+        call scene_init(scene, stat, msg, e=0.172_qp, tol=1.0e-4000_qp)
+        call simulate(scene, with)
+        call check(error, with%n == 115 .and. with%status == status_normal, &
+            "e = 0.172: not 115 collisions")
+        do i = 1, size(above)
+            call scene_init(scene, stat, msg, e=e_crit_4 + above(i), tol=1.0e-4000_qp)
+            call simulate(scene, with)
+            scene%closed_form_limits = .false.
+            call simulate(scene, without)
+            call check(error, with%status == status_normal .and. with%n == without%n .and. &
+                all(with%v == without%v), "just above e_crit: the count or state changed")
+            if (allocated(error)) return
+        end do
+        call scene_init(scene, stat, msg, e=e_crit_4 - 1.0e-3_qp, tol=1.0e-4000_qp)
+        call simulate(scene, with)
+        call check(error, with%status == status_collapsed .and. with%closed_limits >= 1 .and. &
+            all(abs(with%v - 0.25_qp) <= 64*eps), "just below e_crit: no cycle limit")
+    end subroutine test_near_critical
+
+    !> Three equal spheres: the alternating cycle collapses below 7 - 4 sqrt 3
+    !> and breaks out above it.
+    subroutine test_three_spheres(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(scene_t) :: scene
+        type(run_t) :: run
+        integer :: stat
+        character(len=200) :: msg
+        call scene_init(scene, stat, msg, p=3, e=e_crit_3 - 1.0e-4_qp, tol=1.0e-4000_qp)
+        call simulate(scene, run)
+        call check(error, run%status == status_collapsed .and. run%closed_limits == 1 .and. &
+            all(abs(run%v - 1/3.0_qp) <= 64*eps), "p = 3 below e_crit: no cycle limit")
+        call scene_init(scene, stat, msg, p=3, e=e_crit_3 + 1.0e-4_qp, tol=1.0e-4000_qp)
+        call simulate(scene, run)
+        call check(error, run%status == status_normal .and. run%collapses == 0, &
+            "p = 3 above e_crit: not finite")
+    end subroutine test_three_spheres
+
+    !> Keeping a log changes no result line: x_1 is brought forward at the same
+    !> points with or without it.
+    subroutine test_log_neutral(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(scene_t) :: scene
+        type(run_t) :: plain, logged
+        type(event_log_t) :: log
+        real(qp), parameter :: e_values(4) = [0.0_qp, 0.1_qp, 0.2_qp, 0.7_qp]
+        integer :: stat, i
+        character(len=200) :: msg
+        do i = 1, size(e_values)
+            call scene_init(scene, stat, msg, p=5, e=e_values(i), gaps=[0.3_qp, 1.7_qp, 0.0_qp, 2.1_qp])
+            call simulate(scene, plain)
+            call simulate(scene, logged, log)
+            call check(error, all(plain%x == logged%x) .and. all(plain%v == logged%v) .and. &
+                all(plain%y == logged%y) .and. plain%t_end == logged%t_end, &
+                "a log changed the result")
+            if (allocated(error)) return
+        end do
+    end subroutine test_log_neutral
+
+    !> Seeded random rows (p = 2..20, masses log-uniform over 1e-3..1e3 or all
+    !> equal, e uniform in [0, 1], a fifth of the gaps closed): a run that is
+    !> finite without closed-form limits is the same run with them, bit for
+    !> bit; a run that ends keeps momentum, gains no energy, has no negative
+    !> gap and no pair still closing.
+    subroutine test_random_rows(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(scene_t) :: scene
+        type(run_t) :: with, without
+        real(qp) :: u(42), v0(20), scale
+        integer :: stat, i, p, finite
+        character(len=200) :: msg
+        integer, parameter :: scenes = 1000, cap = 5000
+        call seed()
+        finite = 0
+        do i = 1, scenes
+            call random_number(u)
+            p = 2 + int(19*u(1))
+            call scene_init(scene, stat, msg, p=p, e=u(2), &
+                masses=merge(1.0_qp, 1.0e3_qp**(2*u(3:p + 2) - 1), u(42) < 0.5_qp), &
+                gaps=merge(0.0_qp, 2*u(23:p + 21), u(23:p + 21) < 0.2_qp), max_collisions=cap)
+            call simulate(scene, with)
+            scene%closed_form_limits = .false.
+            call simulate(scene, without)
+            if (without%status == status_normal) then
+                finite = finite + 1
+                call check(error, with%status == status_normal .and. with%n == without%n .and. &
+                    all(with%v == without%v) .and. all(with%y == without%y), &
+                    "a finite run changed with closed-form limits")
+                if (allocated(error)) return
+            end if
+            if (with%status == status_max_collisions) cycle
+            v0 = 0.0_qp
+            v0(1) = 1.0_qp
+            ! rounding of each collision adds up: the scale is the largest
+            ! momentum of a sphere times the number of collisions
+            scale = (with%n + 1)*maxval(scene%m)*max(1.0_qp, maxval(abs(with%v)))
+            call check(error, abs(momentum(scene, with%v) - scene%m(1)) <= 64*eps*scale, &
+                "random row: momentum")
+            call check(error, kinetic_energy(scene, with%v) <= &
+                kinetic_energy(scene, v0(:p)) + 64*eps*scale*max(1.0_qp, maxval(abs(with%v))), &
+                "random row: energy gained")
+            call check(error, all(with%y >= 0.0_qp), "random row: negative gap")
+            call check(error, all(with%dy >= -scene%tol*scene%v0), "random row: pair closing")
+            if (allocated(error)) return
+        end do
+        call check(error, finite > scenes/4, "random rows: too few finite runs to compare")
+    end subroutine test_random_rows
+
+end module test_collapse
