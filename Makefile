@@ -1,6 +1,7 @@
 # ARGESIM Comparison 12 — build, test and the reproducible study.
 #
-#   make test            fpm test (installs missing prerequisites first)
+#   make test            fpm test of the engine and of the study (installs missing
+#                        prerequisites first)
 #   make study           every task's tables, figures and results/summary.md
 #   make check-results   regenerate the study elsewhere and compare with results/
 #   make help            this list
@@ -18,7 +19,9 @@ RESULTS ?= results
 BUILD_STAMP := build/.release-stamp
 INC_STAMP := build/.inc-stamp
 BIN := build/release/bin
-SOURCES := $(wildcard src/*.f90 src/*.inc study/*.f90 app/*.f90) fpm.toml
+# the engine (root package) and the study package that uses it
+SOURCES := $(wildcard src/*.f90 src/*.inc study/src/*.f90 study/src/*.inc study/app/*.f90) \
+           fpm.toml study/fpm.toml
 
 # tables of each study program (grouped: one run writes them all)
 A1 := $(RESULTS)/a1_paths.tsv $(RESULTS)/a1_answers.tsv
@@ -52,8 +55,17 @@ help: ## list the targets
 prereqs: ## install missing gfortran, GSL, gnuplot, fpm (Debian, root) or say how
 	@bash .ci/prereqs
 
-test: prereqs $(INC_STAMP) ## run the test suite (fpm test)
-	$(FPM) test
+# the engine's and the CLI's tests (root package), then the study's (study/);
+# the last line adds up both runs' `N passed, N failed` (a run that reports
+# no such line, e.g. because it did not build, counts as one failure)
+test: prereqs $(INC_STAMP) ## run both packages' tests; last line: N passed, N failed
+	@mkdir -p build
+	@set -o pipefail; status=0; \
+	$(FPM) test 2>&1 | tee build/test-engine.log || status=1; \
+	(cd study && $(FPM) test) 2>&1 | tee build/test-study.log || status=1; \
+	awk '/^[0-9]+ passed, [0-9]+ failed$$/ { p += $$1; f += $$3; n++ } \
+		END { f += 2 - n; printf "%d passed, %d failed\n", p, f; exit f > 0 }' \
+		build/test-engine.log build/test-study.log && exit $$status
 
 study: prereqs ## tables, figures, answers.tsv, bench.tsv and summary.md in results/
 	@$(MAKE) --no-print-directory $(RESULTS)/summary.md $(PNG) $(SVG) $(RESULTS)/bench.tsv
@@ -64,16 +76,18 @@ figures: $(PNG) $(SVG) ## the study's figures only
 
 bench: $(RESULTS)/bench.tsv ## speed of the engine per precision and of the study
 
-# fpm does not see edits of an included template (src/*.inc): drop the objects
-# of every source that includes one, so that fpm compiles them again.
-$(INC_STAMP): $(wildcard src/*.inc)
+# fpm does not see edits of an included template (src/*.inc, study/src/*.inc):
+# drop the objects of every source that includes one, in both packages' build
+# trees, so that fpm compiles them again.
+$(INC_STAMP): $(wildcard src/*.inc study/src/*.inc)
 	@mkdir -p build
-	for f in $$(grep -l '^ *include "' src/*.f90); do \
-		rm -f build/gfortran_*/sphere_row/src_$$(basename $$f).o*; done
+	for f in $$(grep -l '^ *include "' src/*.f90 study/src/*.f90); do \
+		rm -f {,study/}build/gfortran_*/*/src_$$(basename $$f).o*; done
 	@touch $@
 
+# the study package's programs (with tsv-compare); the CLI is not needed here
 $(BUILD_STAMP): $(SOURCES) $(INC_STAMP)
-	$(FPM) install --profile release --prefix $(abspath build/release)
+	cd study && $(FPM) install --profile release --prefix $(abspath build/release)
 	@touch $@
 
 # run one study program, keeping its wall time apart from the tables
@@ -134,5 +148,5 @@ check-results: prereqs ## regenerate the tables in build/ and compare with resul
 	$(MAKE) --no-print-directory RESULTS=build/check tables build/check/answers.tsv
 	$(BIN)/tsv-compare committed=$(RESULTS) fresh=build/check
 
-clean: ## remove the build directory (results/ stays: it is committed)
-	rm -rf build
+clean: ## remove the build directories (results/ stays: it is committed)
+	rm -rf build study/build tools/testsuite/build
