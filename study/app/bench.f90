@@ -5,8 +5,8 @@
 program c12_bench
     use, intrinsic :: iso_fortran_env, only: error_unit, compiler_version, compiler_options, &
         int64
-    use sphere_row, only: qp, xdp, dp, sp, scene_t, run_t, scene_xdp_t, run_xdp_t, &
-        scene_dp_t, run_dp_t, scene_sp_t, run_sp_t, scene_init, simulate, status_normal
+    use sphere_row, only: qp, dp, scene_t, scene_init, status_normal
+    use sphere_row_kind_engines, only: built_kinds, kind_info_t, kind_engine_t, new_kind_engine
     use sphere_row_args, only: get_args, take_key, parse_real, unused_arg, wants_help
     use sphere_row_output, only: open_table, tab, itoa, split_tabs, cpu_model
     use sphere_row_monte_carlo, only: normal_sampler_t, mc_counts_t, monte_carlo_v4
@@ -52,10 +52,9 @@ program c12_bench
     write (unit, "(a)") "machine.compiler"//tab//compiler_version()//tab//"-"//tab//"-"
     write (unit, "(a)") "machine.flags"//tab//compiler_options()//tab//"-"//tab//"-"
     do k = 1, size(e_values)
-        call time_kind("real128", e_values(k))
-        call time_kind("real80", e_values(k))
-        call time_kind("real64", e_values(k))
-        call time_kind("real32", e_values(k))
+        do i = size(built_kinds), 1, -1
+            call time_kind(built_kinds(i), e_values(k))
+        end do
     end do
     call time_monte_carlo()
     call method_costs()
@@ -72,65 +71,37 @@ contains
 
     !> Nanoseconds per collision of the definition's scene at e in one kind,
     !> over at least min_seconds of repeated runs (one core).
-    subroutine time_kind(kind_name, e)
-        character(len=*), intent(in) :: kind_name
+    subroutine time_kind(info, e)
+        type(kind_info_t), intent(in) :: info
         real(qp), intent(in) :: e
-        type(scene_t) :: s16
-        type(run_t) :: r16
-        type(scene_xdp_t) :: s10
-        type(run_xdp_t) :: r10
-        type(scene_dp_t) :: s8
-        type(run_dp_t) :: r8
-        type(scene_sp_t) :: s4
-        type(run_sp_t) :: r4
+        !> Runs between two looks at the clock.
+        integer(int64), parameter :: runs_per_look = 1000
+        class(kind_engine_t), allocatable :: engine
+        type(scene_t) :: scene
         integer(int64) :: c0, c1, rate, collisions, runs
         real :: elapsed
         character(len=32) :: buf
-        integer :: which
-        call scene_init(s16, stat, msg, e=e)
-        call scene_init(s10, stat, msg, e=real(e, xdp))
-        call scene_init(s8, stat, msg, e=real(e, dp))
-        call scene_init(s4, stat, msg, e=real(e, sp))
-        ! the kind is chosen once: no text comparison inside the timed loop
-        select case (kind_name)
-        case ("real128")
-            which = 16
-        case ("real80")
-            which = 10
-        case ("real64")
-            which = 8
-        case default
-            which = 4
-        end select
+        character(len=:), allocatable :: key
+        call scene_init(scene, stat, msg, e=e)
+        call new_kind_engine(info%precision, engine)
+        call engine%prepare(scene, -1.0_qp, stat, msg)
         collisions = 0
         runs = 0
         call system_clock(c0, rate)
         do
-            select case (which)
-            case (16)
-                call simulate(s16, r16)
-                collisions = collisions + r16%n
-            case (10)
-                call simulate(s10, r10)
-                collisions = collisions + r10%n
-            case (8)
-                call simulate(s8, r8)
-                collisions = collisions + r8%n
-            case default
-                call simulate(s4, r4)
-                collisions = collisions + r4%n
-            end select
+            collisions = collisions + engine%count_collisions()
             runs = runs + 1
-            if (mod(runs, 1000_int64) /= 0) cycle
+            if (mod(runs, runs_per_look) /= 0) cycle
             call system_clock(c1)
             elapsed = real(c1 - c0)/real(rate)
             if (elapsed >= min_seconds) exit
         end do
         write (buf, "(f4.2)") e
-        write (unit, "(a, f0.1, a)") "engine."//kind_name//".ns_per_collision.e"//trim(buf) &
+        key = "engine."//trim(info%storage)
+        write (unit, "(a, f0.1, a)") key//".ns_per_collision.e"//trim(buf) &
             //tab, 1.0e9*elapsed/real(collisions), tab//"ns"//tab//itoa(int(collisions/runs)) &
             //" collisions per run, "//itoa(int(runs))//" runs"
-        write (unit, "(a, es10.3, a)") "engine."//kind_name//".collisions_per_second.e" &
+        write (unit, "(a, es10.3, a)") key//".collisions_per_second.e" &
             //trim(buf)//tab, real(collisions)/elapsed, tab//"1/s"//tab//"-"
     end subroutine time_kind
 

@@ -5,7 +5,7 @@
 program c12_methods
     use, intrinsic :: iso_fortran_env, only: error_unit, output_unit, int64, &
         compiler_version, compiler_options
-    use sphere_row, only: sp, dp, xdp, qp, scene_t, scene_init, status_normal, &
+    use sphere_row, only: dp, qp, scene_t, scene_init, status_normal, &
         status_word, str
     use sphere_row_args, only: get_args, split_key_value, parse_int, parse_real, wants_help
     use sphere_row_output, only: itoa, cpu_model
@@ -15,6 +15,7 @@ program c12_methods
         method_run, method_name, method_label, method_setting, method_v_tol, kind_name, &
         method_engine, method_absolute, method_ode, method_stepping, stepper_rk8pd, &
         stepper_rkf45
+    use sphere_row_kind_engines, only: built_kinds, kind_info, kind_info_t
     implicit none
 
     character(len=*), parameter :: name = "c12-methods"
@@ -112,9 +113,8 @@ contains
             1.0e-11_qp, 1.0e-13_qp]
         real(qp), parameter :: rkf45_tols(3) = [1.0e-4_qp, 1.0e-8_qp, 1.0e-12_qp]
         real(qp), parameter :: steps(5) = [1.0e-1_qp, 1.0e-2_qp, 1.0e-3_qp, 1.0e-4_qp, 1.0e-5_qp]
-        methods = [new_method(method_engine, sp), new_method(method_engine, dp), &
-            new_method(method_engine, xdp), new_method(method_engine, qp), &
-            new_method(method_engine, dp, tol=real(sqrt(tiny(1.0_dp)), qp)), &
+        methods = [engines_of_each_kind(), &
+            new_method(method_engine, dp, tol=sqrt_tiny(dp)), &
             new_method(method_absolute, dp), new_method(method_absolute, qp)]
         in_map = [(.true., k=1, size(methods))]
         do k = 1, size(ode_tols)
@@ -244,11 +244,7 @@ contains
         real(qp) :: right_log, wrong_log, mid_log
         integer :: m, k, k_right, n_right, unit, j, ref_limit
         logical :: reliable
-        chosen = [new_method(method_engine, sp), new_method(method_engine, dp), &
-            new_method(method_engine, xdp), new_method(method_engine, qp), &
-            new_method(method_engine, sp, tol=real(sqrt(tiny(1.0_sp)), qp)), &
-            new_method(method_engine, dp, tol=real(sqrt(tiny(1.0_dp)), qp)), &
-            new_method(method_engine, xdp, tol=real(sqrt(tiny(1.0_xdp)), qp)), &
+        chosen = [engines_of_each_kind(), engines_with_tiny_tol(), &
             new_method(method_absolute, dp), new_method(method_absolute, qp)]
         ! The reference itself holds to the decade where it still ends normally.
         ref_limit = 0
@@ -292,6 +288,32 @@ contains
         end do
         close (unit)
     end subroutine min_distance
+
+    !> The engine in every kind built, with its kind's epsilon as tolerance.
+    function engines_of_each_kind() result(engines)
+        type(method_t), allocatable :: engines(:)
+        integer :: k
+        engines = [(new_method(method_engine, built_kinds(k)%precision), &
+            k = 1, size(built_kinds))]
+    end function engines_of_each_kind
+
+    !> The engine in every kind built narrower than the reference's (the
+    !> widest, last of built_kinds), with
+    !> tol = sqrt(tiny) of its kind: how far relative variables reach.
+    function engines_with_tiny_tol() result(engines)
+        type(method_t), allocatable :: engines(:)
+        integer :: k
+        engines = [(new_method(method_engine, built_kinds(k)%precision, &
+            tol=built_kinds(k)%sqrt_tiny), k = 1, size(built_kinds) - 1)]
+    end function engines_with_tiny_tol
+
+    !> sqrt(tiny) of a kind built, in real128.
+    pure real(qp) function sqrt_tiny(precision)
+        integer, intent(in) :: precision
+        type(kind_info_t) :: info
+        info = kind_info(precision)
+        sqrt_tiny = info%sqrt_tiny
+    end function sqrt_tiny
 
     !> Whether `method` gives the reference's collision sequence at
     !> e = e_c + 10^log_distance.

@@ -3,9 +3,8 @@
 !> restitution at which a collapse cycle stops being self-similar, and the final
 !> velocities of a fixed sequence as polynomials in e.
 module sphere_row_analysis
-    use sphere_row_kinds, only: qp
-    use sphere_row_status, only: status_normal, status_invalid, event_collision, event_collapse
-    use sphere_row_engine_qp, only: event_log_t
+    use sphere_row, only: qp, event_log_t, status_normal, status_invalid, event_collision, &
+        event_collapse
     implicit none
     private
     public :: sequence_of, sequence_text, sequence_hash, tail_period, rate_map

@@ -15,8 +15,7 @@ module sphere_row_continuous
     use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
     use, intrinsic :: iso_c_binding, only: c_int, c_double, c_size_t, c_ptr, c_funptr, &
         c_null_ptr, c_null_funptr, c_funloc, c_loc, c_f_pointer, c_associated
-    use sphere_row_kinds, only: dp, qp
-    use sphere_row_engine_dp, only: scene_t, scene_check_wp
+    use sphere_row, only: dp, qp, scene_dp_t, scene_check
     use sphere_row_outcome, only: outcome_t, outcome_start, outcome_add
     use sphere_row_status, only: status_normal, status_max_collisions, status_budget, &
         status_solver_failed, status_invalid
@@ -75,7 +74,7 @@ contains
     !> reports an error. scene%tol is not used. `record` asks for every
     !> collision in `out`.
     subroutine simulate_ode(scene, tol, out, record, stepper, max_events, t_max)
-        type(scene_t), intent(in) :: scene
+        type(scene_dp_t), intent(in) :: scene
         real(dp), intent(in) :: tol
         type(outcome_t), intent(inout) :: out
         logical, intent(in), optional :: record
@@ -95,7 +94,7 @@ contains
         keep = .false.
         if (present(record)) keep = record
         call outcome_start(out, scene%p, keep)
-        call scene_check_wp(scene, code, out%message)
+        call scene_check(scene, code, out%message)
         out%status = code
         if (code /= status_normal) return
         if (.not. (tol > 0.0_dp .and. tol < 1.0_dp)) then

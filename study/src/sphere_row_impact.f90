@@ -1,7 +1,7 @@
 !> The collision update (6) in relative variables, shared by the real64
 !> methods that carry gaps and rates (ODE integration and time stepping).
 module sphere_row_impact
-    use sphere_row_kinds, only: dp
+    use sphere_row, only: dp
     implicit none
     private
     public :: impact

@@ -1,21 +1,20 @@
-!> The four methods of issue 4 behind one interface, for studies that compare
-!> them: (1) the event engine in any kind, (2) absolute variables in real64 or
-!> real128, (3) ODE integration with GSL, (4) fixed time steps.
+!> The four methods of the comparison behind one interface, for studies that
+!> compare them: (1) the event engine in any kind built, (2) absolute variables
+!> in real64 or real128, (3) ODE integration with GSL, (4) fixed time steps.
 !>
 !> A `method_t` names a method and its setting; `method_prepare` converts a
 !> real128 scene to the method's kind once, so that `method_run` can be timed
 !> on its own; every run reports into an `outcome_t` (sphere_row_outcome).
-!> The reference of a scene is the engine in real128 with tol = 0.
+!> The reference of a scene is the engine in real128 with tol = reference_tol,
+!> sqrt(tiny).
 module sphere_row_methods
     use, intrinsic :: iso_fortran_env, only: int64
-    use sphere_row_kinds, only: sp, dp, xdp, qp
-    use sphere_row_status, only: status_normal, status_invalid, event_collision
-    use sphere_row, only: scene_t, run_t, event_log_t, scene_xdp_t, run_xdp_t, &
-        event_log_xdp_t, scene_dp_t, run_dp_t, event_log_dp_t, scene_sp_t, run_sp_t, &
-        event_log_sp_t, scene_init, simulate
-    use sphere_row_outcome, only: outcome_t, outcome_start, outcome_add
-    use sphere_row_absolute_dp, only: simulate_absolute_dp => simulate_absolute_wp
-    use sphere_row_absolute_qp, only: simulate_absolute_qp => simulate_absolute_wp
+    use sphere_row, only: dp, qp, scene_t, scene_dp_t, status_normal, status_invalid
+    use sphere_row_outcome, only: outcome_t, outcome_start
+    use sphere_row_kind_engines, only: kind_engine_t, new_kind_engine, convert_scene, &
+        kind_built, kind_info, kind_info_t
+    use sphere_row_absolute_dp, only: simulate_absolute
+    use sphere_row_absolute_qp, only: simulate_absolute
     use sphere_row_continuous, only: simulate_ode, stepper_rk8pd, stepper_rkf45, stepper_name
     use sphere_row_stepping, only: simulate_stepping, default_max_steps
     implicit none
@@ -65,33 +64,13 @@ module sphere_row_methods
         integer(int64) :: max_steps = default_max_steps
         !> Number of spheres of the prepared scene (0: not prepared).
         integer :: p = 0
-        ! The prepared scene in the method's kind and the engine's work space,
-        ! kept here so that a timed run allocates nothing; only the entries of
-        ! the method's kind are used.
-        !> Prepared scene, real32 (engine).
-        type(scene_sp_t) :: scene_sp
-        !> Engine run, real32.
-        type(run_sp_t) :: run_sp
-        !> Engine event log, real32 (recorded runs).
-        type(event_log_sp_t) :: log_sp
-        !> Prepared scene, real64 (engine, absolute, ODE, stepping).
+        !> Engine: the engine in the method's kind with its prepared scene and
+        !> work space, kept here so that a timed run allocates nothing.
+        class(kind_engine_t), allocatable :: engine
+        !> Prepared scene of the real64 methods (absolute, ODE, stepping).
         type(scene_dp_t) :: scene_dp
-        !> Engine run, real64.
-        type(run_dp_t) :: run_dp
-        !> Engine event log, real64 (recorded runs).
-        type(event_log_dp_t) :: log_dp
-        !> Prepared scene, 80-bit extended (engine).
-        type(scene_xdp_t) :: scene_xdp
-        !> Engine run, 80-bit extended.
-        type(run_xdp_t) :: run_xdp
-        !> Engine event log, 80-bit extended (recorded runs).
-        type(event_log_xdp_t) :: log_xdp
-        !> Prepared scene, real128 (engine, absolute).
+        !> Prepared scene of absolute variables in real128.
         type(scene_t) :: scene_qp
-        !> Engine run, real128.
-        type(run_t) :: run_qp
-        !> Engine event log, real128 (recorded runs).
-        type(event_log_t) :: log_qp
     end type method_t
 
 contains
@@ -133,7 +112,6 @@ contains
         type(scene_t), intent(in) :: scene
         integer, intent(out) :: stat
         character(len=*), intent(out) :: msg
-        logical :: own_tol
         method%p = 0
         stat = status_invalid
         if (.not. valid_choice(method)) then
@@ -141,30 +119,16 @@ contains
                 //kind_name(method%precision)
             return
         end if
-        ! Only the engine takes a tolerance of its own; the other methods keep
-        ! the default of scene_init, their kind's epsilon.
-        own_tol = method%id == method_engine .and. method%tol >= 0.0_qp
-        select case (method%precision)
-        case (sp)
-            call scene_init(method%scene_sp, stat, msg, p=scene%p, e=real(scene%e, sp), &
-                d=real(scene%d, sp), v0=real(scene%v0, sp), masses=real(scene%m, sp), &
-                gaps=real(scene%a, sp), max_collisions=scene%max_collisions)
-            if (own_tol) method%scene_sp%tol = real(method%tol, sp)
-        case (dp)
-            call scene_init(method%scene_dp, stat, msg, p=scene%p, e=real(scene%e, dp), &
-                d=real(scene%d, dp), v0=real(scene%v0, dp), masses=real(scene%m, dp), &
-                gaps=real(scene%a, dp), max_collisions=scene%max_collisions)
-            if (own_tol) method%scene_dp%tol = real(method%tol, dp)
-        case (xdp)
-            call scene_init(method%scene_xdp, stat, msg, p=scene%p, e=real(scene%e, xdp), &
-                d=real(scene%d, xdp), v0=real(scene%v0, xdp), masses=real(scene%m, xdp), &
-                gaps=real(scene%a, xdp), max_collisions=scene%max_collisions)
-            if (own_tol) method%scene_xdp%tol = real(method%tol, xdp)
-        case (qp)
-            call scene_init(method%scene_qp, stat, msg, p=scene%p, e=scene%e, d=scene%d, &
-                v0=scene%v0, masses=scene%m, gaps=scene%a, max_collisions=scene%max_collisions)
-            if (own_tol) method%scene_qp%tol = method%tol
-        end select
+        if (method%id == method_engine) then
+            ! only the engine takes a tolerance of its own (negative: its
+            ! kind's epsilon); the other methods keep their kind's epsilon
+            call new_kind_engine(method%precision, method%engine)
+            call method%engine%prepare(scene, method%tol, stat, msg)
+        else if (method%precision == dp) then
+            call convert_scene(scene, method%scene_dp, stat, msg)
+        else
+            call convert_scene(scene, method%scene_qp, stat, msg)
+        end if
         if (stat == status_normal) method%p = scene%p
     end subroutine method_prepare
 
@@ -175,7 +139,6 @@ contains
         type(outcome_t), intent(inout) :: out
         logical, intent(in), optional :: record
         logical :: keep
-        integer :: j
         keep = .false.
         if (present(record)) keep = record
         if (method%p == 0) then
@@ -186,9 +149,9 @@ contains
         select case (method%id)
         case (method_absolute)
             if (method%precision == dp) then
-                call simulate_absolute_dp(method%scene_dp, out, keep)
+                call simulate_absolute(method%scene_dp, out, keep)
             else
-                call simulate_absolute_qp(method%scene_qp, out, keep)
+                call simulate_absolute(method%scene_qp, out, keep)
             end if
         case (method_ode)
             call simulate_ode(method%scene_dp, real(method%tol, dp), out, keep, method%stepper)
@@ -197,92 +160,8 @@ contains
                 method%max_steps)
         case default
             call outcome_start(out, method%p, keep)
-            ! One branch per kind: the engine's types differ by kind.
-            select case (method%precision)
-            case (sp)
-                associate (run => method%run_sp, log => method%log_sp)
-                    if (keep) then
-                        call simulate(method%scene_sp, run, log)
-                        do j = 1, log%n
-                            if (log%kind(j) == event_collision) &
-                                call outcome_add(out, real(log%t(j), qp), log%first(j))
-                        end do
-                    else
-                        call simulate(method%scene_sp, run)
-                    end if
-                    call copy_end(out, run%status, run%n, real(run%t_end, qp))
-                    if (out%status /= status_invalid) then
-                        out%v(:) = run%v
-                        out%y(:) = run%y
-                    end if
-                end associate
-            case (dp)
-                associate (run => method%run_dp, log => method%log_dp)
-                    if (keep) then
-                        call simulate(method%scene_dp, run, log)
-                        do j = 1, log%n
-                            if (log%kind(j) == event_collision) &
-                                call outcome_add(out, real(log%t(j), qp), log%first(j))
-                        end do
-                    else
-                        call simulate(method%scene_dp, run)
-                    end if
-                    call copy_end(out, run%status, run%n, real(run%t_end, qp))
-                    if (out%status /= status_invalid) then
-                        out%v(:) = run%v
-                        out%y(:) = run%y
-                    end if
-                end associate
-            case (xdp)
-                associate (run => method%run_xdp, log => method%log_xdp)
-                    if (keep) then
-                        call simulate(method%scene_xdp, run, log)
-                        do j = 1, log%n
-                            if (log%kind(j) == event_collision) &
-                                call outcome_add(out, real(log%t(j), qp), log%first(j))
-                        end do
-                    else
-                        call simulate(method%scene_xdp, run)
-                    end if
-                    call copy_end(out, run%status, run%n, real(run%t_end, qp))
-                    if (out%status /= status_invalid) then
-                        out%v(:) = run%v
-                        out%y(:) = run%y
-                    end if
-                end associate
-            case (qp)
-                associate (run => method%run_qp, log => method%log_qp)
-                    if (keep) then
-                        call simulate(method%scene_qp, run, log)
-                        do j = 1, log%n
-                            if (log%kind(j) == event_collision) &
-                                call outcome_add(out, log%t(j), log%first(j))
-                        end do
-                    else
-                        call simulate(method%scene_qp, run)
-                    end if
-                    call copy_end(out, run%status, run%n, run%t_end)
-                    if (out%status /= status_invalid) then
-                        out%v(:) = run%v
-                        out%y(:) = run%y
-                    end if
-                end associate
-            end select
+            call method%engine%run_into(out, keep)
         end select
-
-    contains
-
-        !> The engine's count, end time and status (its own count is kept: a
-        !> recorded run counts the same collisions once more from the log).
-        pure subroutine copy_end(outcome, status, n, t_end)
-            type(outcome_t), intent(inout) :: outcome
-            integer, intent(in) :: status, n
-            real(qp), intent(in) :: t_end
-            outcome%status = status
-            outcome%n = n
-            outcome%t_end = t_end
-        end subroutine copy_end
-
     end subroutine method_run
 
     !> Whether the method exists in its kind.
@@ -290,7 +169,7 @@ contains
         type(method_t), intent(in) :: method
         select case (method%id)
         case (method_engine)
-            valid_choice = any(method%precision == [sp, dp, xdp, qp])
+            valid_choice = kind_built(method%precision)
         case (method_absolute)
             valid_choice = any(method%precision == [dp, qp])
         case (method_ode)
@@ -305,22 +184,13 @@ contains
         end select
     end function valid_choice
 
-    !> Short name of a real kind: sp, dp, xdp or qp.
+    !> Short name of a real kind: sp, dp, xdp or qp ("unknown" if not built).
     pure function kind_name(precision) result(name)
         integer, intent(in) :: precision
         character(len=:), allocatable :: name
-        select case (precision)
-        case (sp)
-            name = "sp"
-        case (dp)
-            name = "dp"
-        case (xdp)
-            name = "xdp"
-        case (qp)
-            name = "qp"
-        case default
-            name = "unknown"
-        end select
+        type(kind_info_t) :: info
+        info = kind_info(precision)
+        name = trim(info%name)
     end function kind_name
 
     !> Name of the method (without kind or setting): engine, absolute,
@@ -407,18 +277,12 @@ contains
         if (method%id == method_ode) v_tol = max(v_tol, end_margin*method%tol*v0)
     end function method_v_tol
 
+    !> Epsilon of a real kind built, in real128.
     pure real(qp) function kind_epsilon(precision) result(eps)
         integer, intent(in) :: precision
-        select case (precision)
-        case (sp)
-            eps = real(epsilon(1.0_sp), qp)
-        case (dp)
-            eps = real(epsilon(1.0_dp), qp)
-        case (xdp)
-            eps = real(epsilon(1.0_xdp), qp)
-        case default
-            eps = epsilon(1.0_qp)
-        end select
+        type(kind_info_t) :: info
+        info = kind_info(precision)
+        eps = info%epsilon
     end function kind_epsilon
 
 end module sphere_row_methods

@@ -7,7 +7,7 @@
 !> to real128 is exact, so nothing is lost on the way.
 module sphere_row_outcome
     use, intrinsic :: iso_fortran_env, only: int64
-    use sphere_row_kinds, only: qp
+    use sphere_row, only: qp
     use sphere_row_status, only: status_normal, status_collapsed, status_negative_gap, &
         status_invalid
     implicit none

@@ -7,7 +7,7 @@
 !> iterates that stop moving (stagnation) each end the iteration with their own
 !> status.
 module sphere_row_secant
-    use sphere_row_kinds, only: qp
+    use sphere_row, only: qp
     implicit none
     private
     public :: secant, secant_result_t, residual_fn, secant_word

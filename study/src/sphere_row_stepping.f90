@@ -10,8 +10,7 @@
 !> which is how the method loses collisions.
 module sphere_row_stepping
     use, intrinsic :: iso_fortran_env, only: int64
-    use sphere_row_kinds, only: dp, qp
-    use sphere_row_engine_dp, only: scene_t, scene_check_wp
+    use sphere_row, only: dp, qp, scene_dp_t, scene_check
     use sphere_row_outcome, only: outcome_t, outcome_start, outcome_add
     use sphere_row_status, only: status_normal, status_max_collisions, status_budget, &
         status_invalid
@@ -36,7 +35,7 @@ contains
     !> are the ends of the steps in which they were found. `record` asks for every
     !> collision in `out`.
     pure subroutine simulate_stepping(scene, h, out, record, max_steps)
-        type(scene_t), intent(in) :: scene
+        type(scene_dp_t), intent(in) :: scene
         real(dp), intent(in) :: h
         type(outcome_t), intent(inout) :: out
         logical, intent(in), optional :: record
@@ -50,7 +49,7 @@ contains
         keep = .false.
         if (present(record)) keep = record
         call outcome_start(out, scene%p, keep)
-        call scene_check_wp(scene, code, out%message)
+        call scene_check(scene, code, out%message)
         out%status = code
         if (code /= status_normal) return
         if (.not. (h > 0.0_dp .and. h <= huge(1.0_dp))) then

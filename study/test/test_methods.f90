@@ -3,7 +3,7 @@
 !> tolerances that follow from the method's own error.
 module test_methods
     use, intrinsic :: iso_fortran_env, only: int64
-    use sphere_row, only: sp, dp, xdp, qp, scene_t, scene_dp_t, scene_init, str, &
+    use sphere_row, only: sp, dp, qp, scene_t, scene_dp_t, scene_init, str, &
         status_normal, status_collapsed, status_max_collisions, status_invalid
     use sphere_row_outcome, only: outcome_t, comparison_t, compare_outcomes, classify, &
         category_right, category_wrong_count, category_wrong_state, category_no_end, &
@@ -11,7 +11,8 @@ module test_methods
     use sphere_row_methods, only: method_t, new_method, reference_method, method_prepare, &
         method_run, method_label, method_v_tol, method_engine, method_absolute, method_ode, &
         method_stepping, stepper_rk8pd, stepper_rkf45
-    use sphere_row_absolute_dp, only: simulate_absolute_dp => simulate_absolute_wp
+    use sphere_row_absolute_dp, only: simulate_absolute
+    use sphere_row_kind_engines, only: built_kinds, kind_built, kind_engine_t, new_kind_engine
     use sphere_row_continuous, only: simulate_ode
     use sphere_row_stepping, only: simulate_stepping
     use sphere_row_status, only: status_negative_gap, status_solver_failed, status_budget
@@ -34,6 +35,7 @@ contains
             new_unittest("reference_counts", test_reference_counts), &
             new_unittest("compare_and_classify", test_classify), &
             new_unittest("engine_kinds_via_dispatch", test_engine_kinds), &
+            new_unittest("kinds_built", test_kinds_built), &
             new_unittest("absolute_dp_e03", test_absolute_dp), &
             new_unittest("absolute_qp_e02", test_absolute_qp), &
             new_unittest("absolute_budget", test_absolute_budget), &
@@ -144,10 +146,9 @@ contains
         type(comparison_t) :: cmp
         type(method_t) :: method
         integer :: i
-        integer, parameter :: kinds(4) = [sp, dp, xdp, qp]
         call reference(0.5_qp, ref)
-        do i = 1, size(kinds)
-            method = new_method(method_engine, kinds(i))
+        do i = 1, size(built_kinds)
+            method = new_method(method_engine, built_kinds(i)%precision)
             call run_method(method, 0.5_qp, run)
             cmp = compare_outcomes(ref, run)
             call check(error, cmp%same_sequence, method_label(method)//": other sequence")
@@ -155,6 +156,23 @@ contains
                 method_label(method)//": not right, v error "//str(cmp%v_error))
         end do
     end subroutine test_engine_kinds
+
+    !> The kinds every compiler has are built; every kind built exists in this
+    !> compiler (its kind value is positive), and a kind that is not built gets
+    !> no engine.
+    subroutine test_kinds_built(error)
+        type(error_t), allocatable, intent(out) :: error
+        class(kind_engine_t), allocatable :: engine
+        integer :: i
+        call check(error, kind_built(sp) .and. kind_built(dp) .and. kind_built(qp), &
+            "sp, dp or qp not built")
+        do i = 1, size(built_kinds)
+            call check(error, built_kinds(i)%precision > 0, &
+                trim(built_kinds(i)%name)//": built with a negative kind value")
+        end do
+        call new_kind_engine(-1, engine)
+        call check(error, .not. allocated(engine), "an engine of kind -1 was made")
+    end subroutine test_kinds_built
 
     !> Absolute variables in real64 at e = 0.3 (9 collisions): the positions
     !> are of size up to ~10 L, so each gap carries ~10 eps L of rounding and each
@@ -203,7 +221,7 @@ contains
         integer :: stat
         character(len=200) :: msg
         call scene_init(scene, stat, msg, e=0.2_dp, max_collisions=5)
-        call simulate_absolute_dp(scene, run)
+        call simulate_absolute(scene, run)
         call check(error, run%status == status_max_collisions .and. run%n == 5, &
             "absolute dp: budget of 5 collisions not honoured")
         call check(error, run%min_gap <= 0.0_qp, "min_gap must be <= 0")
@@ -222,7 +240,7 @@ contains
         integer :: stat
         character(len=200) :: msg
         call scene_init(scene, stat, msg, e=0.5_dp, gaps=[1.0_dp, 0.0_dp, 5.0_dp], tol=0.1_dp)
-        call simulate_absolute_dp(scene, run, record=.true.)
+        call simulate_absolute(scene, run, record=.true.)
         call check(error, run%status == status_negative_gap .and. run%n == 3, &
             "absolute dp: overlap not reported, status "//itoa(run%status)//", n = "//itoa(run%n))
         call check(error, abs(run%min_gap + 5.0_qp/9) <= 64*eps_dp, &
