@@ -3,19 +3,17 @@
 !> The paths are exactly piecewise linear, so the table holds their breakpoints
 !> (every event) and the ends of the window, not a sampled grid.
 program c12_a1
-    use, intrinsic :: iso_fortran_env, only: error_unit
     use sphere_row, only: qp, dp, scene_t, run_t, event_log_t, scene_dp_t, run_dp_t, &
         scene_init, simulate, gaps_at, str, status_word, status_normal, event_collision, &
         event_collapse
-    use sphere_row_args, only: get_args, scene_from_args, take_key, real_key, unused_arg, &
-        wants_help, scene_help
+    use sphere_row_args, only: scene_from_args, real_key, unused_arg, scene_help
     use sphere_row_output, only: open_table, write_answer, answer_header, tab, itoa
+    use sphere_row_study_cli, only: start_program, take_out, fail, stop_unless_normal
     implicit none
     character(len=*), parameter :: name = "c12-a1"
-    character(len=:), allocatable :: args(:), text, out, header, line
+    character(len=:), allocatable :: args(:), out, header, line
     character(len=300) :: msg
     logical, allocatable :: used(:)
-    logical :: found
     type(scene_t) :: scene
     type(run_t) :: run
     type(event_log_t) :: log
@@ -25,22 +23,15 @@ program c12_a1
     real(qp), allocatable :: y(:)
     integer :: stat, unit, i, j, n_window
 
-    call get_args(args)
-    if (wants_help(args)) then
-        call usage()
-        stop
-    end if
-    allocate (used(size(args)))
+    call start_program(name, usage, args, used)
     call scene_from_args(args, scene, used, stat, msg, e_default=0.2_qp)
-    if (stat /= status_normal) call fail(msg)
-    out = "results"
-    call take_key(args, used, "out", text, found)
-    if (found) out = text
+    call stop_unless_normal(stat, msg)
+    call take_out(args, used, out)
     t_max = 15.0_qp
     call real_key(args, used, "t_max", t_max, tiny(1.0_qp), huge(1.0_qp), stat, msg, "t_max > 0")
-    if (stat /= status_normal) call fail(msg)
+    call stop_unless_normal(stat, msg)
     call unused_arg(args, used, "out, t_max and the scene keys (see --help)", stat, msg)
-    if (stat /= status_normal) call fail(msg)
+    call stop_unless_normal(stat, msg)
 
     call simulate(scene, run, log)
     if (run%status /= status_normal .and. run%n == 0) call fail(run%message)
@@ -52,7 +43,7 @@ program c12_a1
     end do
     header = header//tab//"event"//tab//"first"//tab//"last"
     call open_table(out, "a1_paths.tsv", header, unit, stat, msg)
-    if (stat /= status_normal) call fail(msg)
+    call stop_unless_normal(stat, msg)
     allocate (y(scene%p - 1))
     n_window = 0
     t_last = 0.0_qp
@@ -88,7 +79,7 @@ program c12_a1
     call simulate(scene_dp, run_dp)
 
     call open_table(out, "a1_answers.tsv", answer_header, unit, stat, msg)
-    if (stat /= status_normal) call fail(msg)
+    call stop_unless_normal(stat, msg)
     call write_answer(unit, "a1.e", str(scene%e), "-", "-", "-", &
         "restitution of task a1 (d = "//str(scene%d)//", v0 = "//str(scene%v0)//")")
     call write_answer(unit, "a1.collisions", itoa(run%n), "real64_engine", itoa(run_dp%n), &
@@ -121,11 +112,6 @@ program c12_a1
 
 contains
 
-    subroutine fail(text)
-        character(len=*), intent(in) :: text
-        write (error_unit, "(a)") name//": "//trim(text)
-        stop 2, quiet=.true.
-    end subroutine fail
 
     subroutine usage()
         print "(a)", "usage: "//name//" [key=value ...]", "", &

@@ -1,45 +1,36 @@
 !> C12 task a2: final velocities in the elastic case (e = 1) and in the
 !> quasi-plastic case, where the velocities are equal to within `spread_max`.
 program c12_a2
-    use, intrinsic :: iso_fortran_env, only: error_unit
     use sphere_row, only: qp, scene_t, run_t, simulate, str, status_word, status_normal, &
         status_collapsed
-    use sphere_row_args, only: get_args, scene_from_args, take_key, real_key, unused_arg, &
-        wants_help, scene_help
+    use sphere_row_args, only: scene_from_args, real_key, unused_arg, scene_help
     use sphere_row_output, only: open_table, write_answer, answer_header, tab, itoa
+    use sphere_row_study_cli, only: start_program, take_out, fail, stop_unless_normal
     implicit none
     character(len=*), parameter :: name = "c12-a2"
-    character(len=:), allocatable :: args(:), text, out, header
+    character(len=:), allocatable :: args(:), out, header
     character(len=300) :: msg
     logical, allocatable :: used(:)
-    logical :: found
     type(scene_t) :: scene
     type(run_t) :: elastic, plastic
     real(qp) :: e_plastic, spread_max, spread, plain
     real(qp), allocatable :: v_elastic(:)
     integer :: stat, unit, i, p
 
-    call get_args(args)
-    if (wants_help(args)) then
-        call usage()
-        stop
-    end if
-    allocate (used(size(args)))
+    call start_program(name, usage, args, used)
     call scene_from_args(args, scene, used, stat, msg, e_default=1.0_qp)
-    if (stat /= status_normal) call fail(msg)
-    out = "results"
-    call take_key(args, used, "out", text, found)
-    if (found) out = text
+    call stop_unless_normal(stat, msg)
+    call take_out(args, used, out)
     e_plastic = 0.1_qp
     call real_key(args, used, "e_plastic", e_plastic, 0.0_qp, 1.0_qp, stat, msg)
-    if (stat /= status_normal) call fail(msg)
+    call stop_unless_normal(stat, msg)
     spread_max = 1.0e-30_qp
     call real_key(args, used, "spread_max", spread_max, tiny(1.0_qp), huge(1.0_qp), stat, msg, &
         "spread_max > 0")
-    if (stat /= status_normal) call fail(msg)
+    call stop_unless_normal(stat, msg)
     call unused_arg(args, used, "out, e_plastic, spread_max and the scene keys (see --help)", &
         stat, msg)
-    if (stat /= status_normal) call fail(msg)
+    call stop_unless_normal(stat, msg)
 
     p = scene%p
     scene%e = 1.0_qp
@@ -60,13 +51,13 @@ program c12_a2
     end do
     header = header//tab//"spread[V]"
     call open_table(out, "a2_velocities.tsv", header, unit, stat, msg)
-    if (stat /= status_normal) call fail(msg)
+    call stop_unless_normal(stat, msg)
     call row("elastic", 1.0_qp, elastic)
     call row("quasi_plastic", e_plastic, plastic)
     close (unit)
 
     call open_table(out, "a2_answers.tsv", answer_header, unit, stat, msg)
-    if (stat /= status_normal) call fail(msg)
+    call stop_unless_normal(stat, msg)
     do i = 1, p
         if (all(scene%m == scene%m(1))) then
             call write_answer(unit, "a2.elastic.v"//itoa(i), str(elastic%v(i)), "closed_form", &
@@ -112,11 +103,6 @@ contains
         write (unit, "(a)") line//tab//str(maxval(run%v) - minval(run%v))
     end subroutine row
 
-    subroutine fail(text)
-        character(len=*), intent(in) :: text
-        write (error_unit, "(a)") name//": "//trim(text)
-        stop 2, quiet=.true.
-    end subroutine fail
 
     subroutine usage()
         print "(a)", "usage: "//name//" [key=value ...]", "", &

@@ -2,22 +2,21 @@
 !> quasi-plastic regime, its intervals of constant n and sequence, and the
 !> critical restitution below which the collisions never end.
 program c12_b1
-    use, intrinsic :: iso_fortran_env, only: error_unit
     use sphere_row, only: qp, scene_t, run_t, event_log_t, simulate, str, status_word, &
         status_normal, status_collapsed
-    use sphere_row_args, only: get_args, scene_from_args, take_key, real_key, int_key, &
-        unused_arg, wants_help, scene_help
+    use sphere_row_args, only: scene_from_args, real_key, int_key, unused_arg, &
+        scene_help
     use sphere_row_output, only: open_table, write_answer, answer_header, tab, itoa
     use sphere_row_analysis, only: sequence_of, sequence_text, sequence_hash, tail_period, &
         critical_restitution, bisect_changes
+    use sphere_row_study_cli, only: start_program, take_out, stop_unless_normal
     implicit none
     character(len=*), parameter :: name = "c12-b1"
     !> Class of a run with a collapse: its count depends on tol, not on e alone.
     integer(8), parameter :: collapsed_class = 0_8
-    character(len=:), allocatable :: args(:), text, out
+    character(len=:), allocatable :: args(:), out
     character(len=300) :: msg
     logical, allocatable :: used(:)
-    logical :: found
     type(scene_t) :: scene
     type(run_t) :: run
     type(event_log_t) :: events
@@ -31,34 +30,27 @@ program c12_b1
     integer(8), allocatable :: class_scan(:)
     integer(8) :: class_mid
 
-    call get_args(args)
-    if (wants_help(args)) then
-        call usage()
-        stop
-    end if
-    allocate (used(size(args)))
+    call start_program(name, usage, args, used)
     call scene_from_args(args, scene, used, stat, msg)
-    if (stat /= status_normal) call fail(msg)
-    out = "results"
-    call take_key(args, used, "out", text, found)
-    if (found) out = text
+    call stop_unless_normal(stat, msg)
+    call take_out(args, used, out)
     n_scan = 2001
     call int_key(args, used, "n_scan", n_scan, 3, huge(1), stat, msg)
-    if (stat /= status_normal) call fail(msg)
+    call stop_unless_normal(stat, msg)
     resolution = 1.0e-12_qp
     call real_key(args, used, "resolution", resolution, 1.0e-30_qp, 0.1_qp, stat, msg, &
         "1e-30 <= resolution <= 0.1")
-    if (stat /= status_normal) call fail(msg)
+    call stop_unless_normal(stat, msg)
     n_bisect_max = 300
     call int_key(args, used, "n_bisect_max", n_bisect_max, 1, huge(1), stat, msg)
-    if (stat /= status_normal) call fail(msg)
+    call stop_unless_normal(stat, msg)
     tol_fine = 1.0e-4000_qp
     call real_key(args, used, "tol_fine", tol_fine, 1.0e-4900_qp, 0.5_qp, stat, msg, &
         "1e-4900 <= tol_fine <= 0.5")
-    if (stat /= status_normal) call fail(msg)
+    call stop_unless_normal(stat, msg)
     call unused_arg(args, used, "out, n_scan, resolution, n_bisect_max, tol_fine and the "// &
         "scene keys (see --help)", stat, msg)
-    if (stat /= status_normal) call fail(msg)
+    call stop_unless_normal(stat, msg)
 
     ! 1. dense scan of e from 1 down to 0 with the scene's own tolerance
     allocate (e_scan(n_scan), n_scan_runs(n_scan), status_scan(n_scan), class_scan(n_scan))
@@ -82,7 +74,7 @@ program c12_b1
 
     call open_table(out, "b1_scan.tsv", "e"//tab//"collisions"//tab//"status"//tab// &
         "sequence_hash", unit, stat, msg)
-    if (stat /= status_normal) call fail(msg)
+    call stop_unless_normal(stat, msg)
     do j = 1, n_scan
         write (unit, "(a)") str(e_scan(j))//tab//itoa(n_scan_runs(j))//tab// &
             status_word(status_scan(j))//tab//itoa(class_scan(j))
@@ -92,7 +84,7 @@ program c12_b1
     ! intervals between consecutive boundaries, each with its sequence
     call open_table(out, "b1_intervals.tsv", "e_low"//tab//"e_high"//tab//"width"//tab// &
         "collisions"//tab//"status"//tab//"sequence", unit, stat, msg)
-    if (stat /= status_normal) call fail(msg)
+    call stop_unless_normal(stat, msg)
     n_intervals = 0
     e_quasi = -1.0_qp
     do j = 0, n_boundaries
@@ -164,7 +156,7 @@ program c12_b1
     n_delta = 25
     call open_table(out, "b1_critical.tsv", "delta=e-e_crit"//tab//"e"//tab//"collisions" &
         //tab//"status"//tab//"collisions*sqrt(delta)", unit, stat, msg)
-    if (stat /= status_normal) call fail(msg)
+    call stop_unless_normal(stat, msg)
     sx = 0
     sy = 0
     sxx = 0
@@ -198,7 +190,7 @@ program c12_b1
     end if
 
     call open_table(out, "b1_answers.tsv", answer_header, unit, stat, msg)
-    if (stat /= status_normal) call fail(msg)
+    call stop_unless_normal(stat, msg)
     if (e_c > 0) then
         call write_answer(unit, "b1.e_crit", str(e_c), "closed_form_3-2sqrt2", str(closed), &
             str(e_c - closed), "e where the rate map of the collapse cycle "// &
@@ -276,11 +268,6 @@ contains
         end do
     end subroutine sort
 
-    subroutine fail(text)
-        character(len=*), intent(in) :: text
-        write (error_unit, "(a)") name//": "//trim(text)
-        stop 2, quiet=.true.
-    end subroutine fail
 
     subroutine usage()
         print "(a)", "usage: "//name//" [key=value ...]", "", &

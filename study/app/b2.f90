@@ -2,22 +2,21 @@
 !> quasi-plastic regime, compared with their closed forms: on an interval of
 !> constant collision sequence every final velocity is a polynomial in e.
 program c12_b2
-    use, intrinsic :: iso_fortran_env, only: error_unit
     use sphere_row, only: qp, scene_t, run_t, event_log_t, simulate, str, status_word, &
         status_normal
-    use sphere_row_args, only: get_args, scene_from_args, take_key, int_key, unused_arg, &
-        wants_help, scene_help
+    use sphere_row_args, only: scene_from_args, int_key, unused_arg, scene_help
     use sphere_row_output, only: open_table, write_answer, answer_header, tab, itoa
     use sphere_row_analysis, only: sequence_of, sequence_text, sequence_hash, &
         sequence_polynomials, poly_eval
+    use sphere_row_study_cli, only: start_program, take_out, stop_unless_normal
     implicit none
     character(len=*), parameter :: name = "c12-b2"
     !> Sequences longer than this are not written out as polynomials.
     integer, parameter :: max_listed = 20
-    character(len=:), allocatable :: args(:), text, out, header, line
+    character(len=:), allocatable :: args(:), out, header, line
     character(len=300) :: msg
     logical, allocatable :: used(:)
-    logical :: found, single_hit, equal, contiguous
+    logical :: single_hit, equal, contiguous
     type(scene_t) :: scene
     type(run_t) :: run
     type(event_log_t) :: events
@@ -27,22 +26,15 @@ program c12_b2
     integer(8), allocatable :: seen(:)
     real(qp) :: e, diff, max_diff, single, max_single, e_single_min, v_plain
 
-    call get_args(args)
-    if (wants_help(args)) then
-        call usage()
-        stop
-    end if
-    allocate (used(size(args)))
+    call start_program(name, usage, args, used)
     call scene_from_args(args, scene, used, stat, msg)
-    if (stat /= status_normal) call fail(msg)
-    out = "results"
-    call take_key(args, used, "out", text, found)
-    if (found) out = text
+    call stop_unless_normal(stat, msg)
+    call take_out(args, used, out)
     n_grid = 1001
     call int_key(args, used, "n_grid", n_grid, 2, huge(1), stat, msg)
-    if (stat /= status_normal) call fail(msg)
+    call stop_unless_normal(stat, msg)
     call unused_arg(args, used, "out, n_grid and the scene keys (see --help)", stat, msg)
-    if (stat /= status_normal) call fail(msg)
+    call stop_unless_normal(stat, msg)
 
     p = scene%p
     equal = all(scene%m == scene%m(1))
@@ -52,11 +44,11 @@ program c12_b2
     end do
     header = header//tab//"max|v-polynomial|[V]"//tab//"v"//itoa(p)//"_single_hit[V]"
     call open_table(out, "b2_velocities.tsv", header, unit, stat, msg)
-    if (stat /= status_normal) call fail(msg)
+    call stop_unless_normal(stat, msg)
     call open_table(out, "b2_closed_forms.tsv", "sequence"//tab//"collisions"//tab// &
         "e_first_on_grid"//tab//"sphere"//tab// &
         "coefficients_of_e^0,e^1,...[V]", unit_forms, stat, msg)
-    if (stat /= status_normal) call fail(msg)
+    call stop_unless_normal(stat, msg)
 
     allocate (seen(0))
     max_diff = 0
@@ -113,7 +105,7 @@ program c12_b2
     scene%e = 0
     call simulate(scene, run)
     call open_table(out, "b2_answers.tsv", answer_header, unit, stat, msg)
-    if (stat /= status_normal) call fail(msg)
+    call stop_unless_normal(stat, msg)
     call write_answer(unit, "b2.grid_points", itoa(n_grid), "-", "-", "-", &
         "e from 1 down to 0 in equal steps; final velocities by the event-driven engine")
     call write_answer(unit, "b2.max_polynomial_difference", str(max_diff), "closed_form", &
@@ -155,11 +147,6 @@ contains
         end do
     end subroutine list_forms
 
-    subroutine fail(text)
-        character(len=*), intent(in) :: text
-        write (error_unit, "(a)") name//": "//trim(text)
-        stop 2, quiet=.true.
-    end subroutine fail
 
     subroutine usage()
         print "(a)", "usage: "//name//" [key=value ...]", "", &

@@ -3,13 +3,14 @@
 !> Timing is measured here, never asserted in tests: wall-clock numbers of
 !> one machine, written with a description of that machine.
 program c12_bench
-    use, intrinsic :: iso_fortran_env, only: error_unit, compiler_version, compiler_options, &
+    use, intrinsic :: iso_fortran_env, only: compiler_version, compiler_options, &
         int64
     use sphere_row, only: qp, dp, scene_t, scene_init, status_normal
     use sphere_row_kind_engines, only: built_kinds, kind_info_t, kind_engine_t, new_kind_engine
-    use sphere_row_args, only: get_args, take_key, parse_real, unused_arg, wants_help
+    use sphere_row_args, only: take_key, parse_real, unused_arg
     use sphere_row_output, only: open_table, tab, itoa, split_tabs, cpu_model
     use sphere_row_monte_carlo, only: normal_sampler_t, mc_counts_t, monte_carlo_v4
+    use sphere_row_study_cli, only: start_program, take_out, fail, stop_unless_normal
     implicit none
     character(len=*), parameter :: name = "c12-bench"
     character(len=*), parameter :: tasks(7) = [character(len=7) :: "a1", "a2", "b1", &
@@ -22,32 +23,23 @@ program c12_bench
     real :: min_seconds
     integer :: stat, unit, i, k
 
-    call get_args(args)
-    if (wants_help(args)) then
-        print "(a)", "usage: "//name//" [out=results] [min_seconds=0.1]", &
-            "Times the engine in each precision kind (ns per collision) and collects", &
-            "the wall time of each study program from OUT/timing/; writes OUT/bench.tsv."
-        stop
-    end if
-    allocate (used(size(args)))
-    out = "results"
-    call take_key(args, used, "out", text, found)
-    if (found) out = text
+    call start_program(name, usage, args, used)
+    call take_out(args, used, out)
     min_seconds = 0.1
     call take_key(args, used, "min_seconds", text, found)
     if (found) then
         call parse_real("min_seconds", text, seconds, stat, msg)
-        if (stat /= status_normal) call fail(msg)
+        call stop_unless_normal(stat, msg)
         if (.not. (seconds > 0 .and. seconds < 100)) &
             call fail("min_seconds = "//text//": allowed 0 < min_seconds < 100")
         min_seconds = real(seconds)
     end if
     call unused_arg(args, used, "out, min_seconds", stat, msg)
-    if (stat /= status_normal) call fail(msg)
+    call stop_unless_normal(stat, msg)
 
     call open_table(out, "bench.tsv", "quantity"//tab//"value"//tab//"unit"//tab//"note", &
         unit, stat, msg)
-    if (stat /= status_normal) call fail(msg)
+    call stop_unless_normal(stat, msg)
     write (unit, "(a)") "machine.cpu"//tab//cpu_model()//tab//"-"//tab//"/proc/cpuinfo"
     write (unit, "(a)") "machine.compiler"//tab//compiler_version()//tab//"-"//tab//"-"
     write (unit, "(a)") "machine.flags"//tab//compiler_options()//tab//"-"//tab//"-"
@@ -68,6 +60,12 @@ program c12_bench
     close (unit)
 
 contains
+
+    subroutine usage()
+        print "(a)", "usage: "//name//" [out=results] [min_seconds=0.1]", &
+            "Times the engine in each precision kind (ns per collision) and collects", &
+            "the wall time of each study program from OUT/timing/; writes OUT/bench.tsv."
+    end subroutine usage
 
     !> Nanoseconds per collision of the definition's scene at e in one kind,
     !> over at least min_seconds of repeated runs (one core).
@@ -188,10 +186,5 @@ contains
             "wall time of its last run by make"
     end subroutine study_time
 
-    subroutine fail(text)
-        character(len=*), intent(in) :: text
-        write (error_unit, "(a)") name//": "//trim(text)
-        stop 2, quiet=.true.
-    end subroutine fail
 
 end program c12_bench

@@ -3,11 +3,12 @@
 program c12_c1
     use, intrinsic :: iso_fortran_env, only: error_unit
     use sphere_row, only: qp, scene_t, run_t, event_log_t, simulate, str, status_normal
-    use sphere_row_args, only: get_args, scene_from_args, take_key, real_key, int_key, &
-        unused_arg, wants_help, scene_help
+    use sphere_row_args, only: scene_from_args, real_key, int_key, unused_arg, &
+        scene_help
     use sphere_row_output, only: open_table, write_answer, answer_header, tab, itoa
     use sphere_row_analysis, only: sequence_of, sequence_text
     use sphere_row_secant, only: secant, secant_result_t, secant_word, secant_converged
+    use sphere_row_study_cli, only: start_program, take_out, fail, stop_unless_normal
     implicit none
     character(len=*), parameter :: name = "c12-c1"
     !> Starting pairs of the robustness table: good ones around the root, and
@@ -17,10 +18,9 @@ program c12_c1
         0.5_qp, 0.6_qp, 0.9_qp, 1.0_qp, 0.3_qp, 0.35_qp, 0.0_qp, 1.0_qp, &
         0.05_qp, 0.1_qp, 0.1_qp, 0.15_qp, 0.2_qp, 0.25_qp, 0.16_qp, 0.9_qp, &
         0.17_qp, 0.2_qp], [2, 9])
-    character(len=:), allocatable :: args(:), text, out
+    character(len=:), allocatable :: args(:), out
     character(len=300) :: msg
     logical, allocatable :: used(:)
-    logical :: found
     type(scene_t) :: scene
     type(run_t) :: run
     type(event_log_t) :: events
@@ -29,41 +29,34 @@ program c12_c1
     real(qp) :: target, x0, x1, f_tol, closed
     integer :: stat, unit, k, max_iterations
 
-    call get_args(args)
-    if (wants_help(args)) then
-        call usage()
-        stop
-    end if
-    allocate (used(size(args)))
+    call start_program(name, usage, args, used)
     call scene_from_args(args, scene, used, stat, msg)
-    if (stat /= status_normal) call fail(msg)
-    out = "results"
-    call take_key(args, used, "out", text, found)
-    if (found) out = text
+    call stop_unless_normal(stat, msg)
+    call take_out(args, used, out)
     target = 0.5_qp
     call real_key(args, used, "target", target, 0.0_qp, 1.0_qp, stat, msg)
-    if (stat /= status_normal) call fail(msg)
+    call stop_unless_normal(stat, msg)
     x0 = 0.5_qp
     call real_key(args, used, "x0", x0, 0.0_qp, 1.0_qp, stat, msg)
-    if (stat /= status_normal) call fail(msg)
+    call stop_unless_normal(stat, msg)
     x1 = 0.6_qp
     call real_key(args, used, "x1", x1, 0.0_qp, 1.0_qp, stat, msg)
-    if (stat /= status_normal) call fail(msg)
+    call stop_unless_normal(stat, msg)
     if (x0 == x1) call fail("x1 = "//str(x1)//": allowed x1 /= x0")
     f_tol = 1.0e-30_qp
     call real_key(args, used, "f_tol", f_tol, 1.0e-33_qp, 1.0_qp, stat, msg, "1e-33 <= f_tol <= 1")
-    if (stat /= status_normal) call fail(msg)
+    call stop_unless_normal(stat, msg)
     max_iterations = 50
     call int_key(args, used, "max_iterations", max_iterations, 1, huge(1), stat, msg)
-    if (stat /= status_normal) call fail(msg)
+    call stop_unless_normal(stat, msg)
     call unused_arg(args, used, "out, target, x0, x1, f_tol, max_iterations and the "// &
         "scene keys (see --help)", stat, msg)
-    if (stat /= status_normal) call fail(msg)
+    call stop_unless_normal(stat, msg)
 
     call solve(x0, x1, main_result)
     call open_table(out, "c1_iterations.tsv", "k"//tab//"e_k"//tab//"residual=v4-target[V]", &
         unit, stat, msg)
-    if (stat /= status_normal) call fail(msg)
+    call stop_unless_normal(stat, msg)
     do k = 0, main_result%iterations + 1
         write (unit, "(a)") itoa(k)//tab//str(main_result%xs(k))//tab//str(main_result%fs(k))
     end do
@@ -71,7 +64,7 @@ program c12_c1
 
     call open_table(out, "c1_starts.tsv", "x0"//tab//"x1"//tab//"status"//tab//"iterations" &
         //tab//"e_last"//tab//"residual[V]", unit, stat, msg)
-    if (stat /= status_normal) call fail(msg)
+    call stop_unless_normal(stat, msg)
     do k = 1, size(starts, 2)
         call solve(starts(1, k), starts(2, k), trial)
         write (unit, "(a)") str(starts(1, k))//tab//str(starts(2, k))//tab// &
@@ -86,7 +79,7 @@ program c12_c1
     call simulate(scene, run, events)
     call sequence_of(events, pairs)
     call open_table(out, "c1_answers.tsv", answer_header, unit, stat, msg)
-    if (stat /= status_normal) call fail(msg)
+    call stop_unless_normal(stat, msg)
     if (count(pairs == scene%p - 1) == 1 .and. all(scene%m == scene%m(1))) then
         call write_answer(unit, "c1.e", str(main_result%x), "closed_form", str(closed), &
             str(main_result%x - closed), "secant in real(16) from e = "//str(x0)//", "// &
@@ -130,11 +123,6 @@ contains
             64*epsilon(1.0_qp), max_iterations, result)
     end subroutine solve
 
-    subroutine fail(text)
-        character(len=*), intent(in) :: text
-        write (error_unit, "(a)") name//": "//trim(text)
-        stop 2, quiet=.true.
-    end subroutine fail
 
     subroutine usage()
         print "(a)", "usage: "//name//" [key=value ...]", "", &

@@ -11,16 +11,17 @@
 !> law of v4 = v0 ((1+e)/2)^3, valid where sphere 4 is struck once; the bound
 !> of that region is found with the engine and the samples below it counted.
 program c12_c2
-    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit, int64
+    use, intrinsic :: iso_fortran_env, only: output_unit, int64
     use sphere_row, only: dp, qp, scene_t, run_t, simulate, str, real_str, status_normal
-    use sphere_row_args, only: get_args, scene_from_args, split_key_value, parse_real, &
-        parse_int, unused_arg, scene_help, wants_help
+    use sphere_row_args, only: scene_from_args, split_key_value, parse_real, parse_int, &
+        unused_arg, scene_help
     use sphere_row_output, only: itoa
     use sphere_row_monte_carlo, only: normal_sampler_t, mc_counts_t, monte_carlo_v4, &
         normal_mass_outside_unit, normal_cdf, normal_density, sample_moments, normal_quantile, &
         mean_ci_half_width, sort_values, sorted_quantile, ks_distance, cubic_law_applies, &
         cubic_law_mean, cubic_law_sd, cubic_law_quantile, cubic_law_cdf, cubic_law_density, &
         cubic_law_v4, single_impact_bound, min_acceptance
+    use sphere_row_study_cli, only: start_program, fail, stop_unless_normal
     implicit none
 
     character(len=*), parameter :: name = "c12-c2"
@@ -63,20 +64,15 @@ program c12_c2
     real(qp) :: bound, max_diff, redraws_expected, outside_expected
     integer :: outside, reruns, mismatches
 
-    call get_args(args)
-    if (wants_help(args)) then
-        call usage()
-        stop
-    end if
+    call start_program(name, usage, args, used)
     do i = 1, size(args)
         if (index(args(i), "=") == 0) cycle
         call split_key_value(args(i), key, value, stat, msg)
         if (stat == status_normal .and. key == "e") call fail("e = "//value &
             //": not a key of "//name//", which samples e; allowed keys are "//all_keys)
     end do
-    allocate (used(size(args)))
     call scene_from_args(args, scene, used, stat, msg)
-    if (stat /= status_normal) call fail(msg)
+    call stop_unless_normal(stat, msg)
 
     n = 1000000
     nmax = n
@@ -91,7 +87,7 @@ program c12_c2
     do i = 1, size(args)
         if (used(i) .or. index(args(i), "=") == 0) cycle
         call split_key_value(args(i), key, value, stat, msg)
-        if (stat /= status_normal) call fail(msg)
+        call stop_unless_normal(stat, msg)
         used(i) = .true.
         select case (key)
         case ("n")
@@ -114,24 +110,24 @@ program c12_c2
         case default
             used(i) = .false.
         end select
-        if (stat /= status_normal) call fail(msg)
+        call stop_unless_normal(stat, msg)
     end do
     call unused_arg(args, used, all_keys, stat, msg)
-    if (stat /= status_normal) call fail(msg)
+    call stop_unless_normal(stat, msg)
     if (.not. nmax_given) nmax = n
     call check_settings()
 
     ! the stream: first the main sample, then its continuation up to nmax
     allocate (v4(nmax), e(nmax))
     call sampler%seed(seed, stat, msg)
-    if (stat /= status_normal) call fail(msg)
+    call stop_unless_normal(stat, msg)
     call system_clock(clock0, clock_rate)
     call monte_carlo_v4(sampler, scene, mean, sd, v4(:n), counts, stat, msg, e(:n))
-    if (stat /= status_normal) call fail(msg)
+    call stop_unless_normal(stat, msg)
     if (nmax > n) then
         call monte_carlo_v4(sampler, scene, mean, sd, v4(n + 1:), counts_rest, stat, msg, &
             e(n + 1:))
-        if (stat /= status_normal) call fail(msg)
+        call stop_unless_normal(stat, msg)
     end if
     call system_clock(clock1)
     call sampler%release()
@@ -201,7 +197,7 @@ contains
         real(qp) :: e_q, inside
         integer :: stride, i, j
         call single_impact_bound(scene, bracket_lo, bracket_hi, bound, stat, msg)
-        if (stat /= status_normal) call fail(msg)
+        call stop_unless_normal(stat, msg)
         outside = count(e(:n) < bound)
         inside = 1.0_qp - real(normal_mass_outside_unit(mean, sd), qp)
         outside_expected = n*(real(normal_cdf(real(bound, dp), mean, sd), qp) &
@@ -496,12 +492,6 @@ contains
         end do
     end subroutine sort_sizes
 
-    !> One line on stderr, exit status 2, no table written.
-    subroutine fail(text)
-        character(len=*), intent(in) :: text
-        write (error_unit, "(a)") name//": "//trim(text)
-        stop 2, quiet=.true.
-    end subroutine fail
 
     subroutine usage()
         write (output_unit, "(a)") &

@@ -12,8 +12,9 @@
 program tsv_compare
     use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
     use sphere_row, only: qp
-    use sphere_row_args, only: get_args, take_key, unused_arg, wants_help
+    use sphere_row_args, only: take_key, unused_arg
     use sphere_row_output, only: itoa, split_tabs
+    use sphere_row_study_cli, only: start_program, fail, stop_unless_normal
     implicit none
     character(len=*), parameter :: name = "tsv-compare"
     character(len=:), allocatable :: args(:), committed, fresh, listing
@@ -23,19 +24,13 @@ program tsv_compare
     logical :: found
     integer :: stat, unit, ios, n_files, n_values, n_bad
 
-    call get_args(args)
-    if (wants_help(args)) then
-        print "(a)", "usage: "//name//" committed=DIR fresh=DIR", &
-            "Compares every *.tsv of DIR fresh with the same file in DIR committed."
-        stop
-    end if
-    allocate (used(size(args)))
+    call start_program(name, usage, args, used)
     call take_key(args, used, "committed", committed, found)
     if (.not. found) call fail("committed: missing: allowed committed=DIR")
     call take_key(args, used, "fresh", fresh, found)
     if (.not. found) call fail("fresh: missing: allowed fresh=DIR")
     call unused_arg(args, used, "committed, fresh", stat, msg)
-    if (stat /= 0) call fail(msg)
+    call stop_unless_normal(stat, msg)
 
     listing = "build/tsv-compare.list"
     call execute_command_line("mkdir -p build && ls -1 '"//fresh//"' | grep '\.tsv$' > " &
@@ -63,6 +58,11 @@ program tsv_compare
         " numbers agree with "//committed
 
 contains
+
+    subroutine usage()
+        print "(a)", "usage: "//name//" committed=DIR fresh=DIR", &
+            "Compares every *.tsv of DIR fresh with the same file in DIR committed."
+    end subroutine usage
 
     !> Compare one table; report each differing field on stderr.
     subroutine compare_file(base)
@@ -188,10 +188,5 @@ contains
         close (u)
     end subroutine read_lines
 
-    subroutine fail(text)
-        character(len=*), intent(in) :: text
-        write (error_unit, "(a)") name//": "//trim(text)
-        stop 2, quiet=.true.
-    end subroutine fail
 
 end program tsv_compare

@@ -1,13 +1,13 @@
-!> c12-methods: the four methods of issue 4 compared against the reference
+!> c12-methods: the four methods of the comparison compared against the reference
 !> engine (real128) on the definition's scene, written as TSV tables:
 !> work-precision, stability over e, smallest distance to e_c per precision,
 !> costs per collision, and the platform the times were taken on.
 program c12_methods
-    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit, int64, &
+    use, intrinsic :: iso_fortran_env, only: output_unit, int64, &
         compiler_version, compiler_options
     use sphere_row, only: dp, qp, scene_t, scene_init, status_normal, &
         status_word, str
-    use sphere_row_args, only: get_args, split_key_value, parse_int, parse_real, wants_help
+    use sphere_row_args, only: split_key_value, parse_int, parse_real
     use sphere_row_output, only: itoa, cpu_model
     use sphere_row_outcome, only: outcome_t, comparison_t, compare_outcomes, classify, &
         category_word
@@ -16,6 +16,7 @@ program c12_methods
         method_engine, method_absolute, method_ode, method_stepping, stepper_rk8pd, &
         stepper_rkf45
     use sphere_row_kind_engines, only: built_kinds, kind_info, kind_info_t
+    use sphere_row_study_cli, only: start_program, fail, stop_unless_normal
     implicit none
 
     character(len=*), parameter :: name = "c12-methods"
@@ -32,6 +33,7 @@ program c12_methods
     integer, parameter :: refine_steps = 12
 
     character(len=:), allocatable :: args(:), key, value, out_dir
+    logical, allocatable :: used(:)
     character(len=300) :: msg
     type(method_t), allocatable :: methods(:)
     logical, allocatable :: in_map(:)
@@ -43,11 +45,7 @@ program c12_methods
     real :: clock_start, clock_end
 
     call cpu_time(clock_start)
-    call get_args(args)
-    if (wants_help(args)) then
-        call usage()
-        stop
-    end if
+    call start_program(name, usage, args, used)
     out_dir = "results"
     repeats = 5
     min_time = 0.05_qp
@@ -55,7 +53,7 @@ program c12_methods
     max_steps = 20000000_int64
     do i = 1, size(args)
         call split_key_value(args(i), key, value, stat, msg)
-        if (stat /= status_normal) call fail(msg)
+        call stop_unless_normal(stat, msg)
         select case (key)
         case ("out")
             if (len(value) == 0 .or. scan(value, "'""") > 0) &
@@ -81,7 +79,7 @@ program c12_methods
         case default
             call fail("unknown key '"//key//"': allowed keys are "//all_keys)
         end select
-        if (stat /= status_normal) call fail(msg)
+        call stop_unless_normal(stat, msg)
     end do
     call execute_command_line("mkdir -p '"//out_dir//"'", exitstat=stat)
     if (stat /= 0) call fail("out = "//out_dir//": the directory cannot be created")
@@ -454,19 +452,13 @@ contains
         if (code /= status_normal) call fail(text)
     end subroutine prepare
 
-    !> One line on stderr, exit status 2, nothing written.
-    subroutine fail(text)
-        character(len=*), intent(in) :: text
-        write (error_unit, "(a)") name//": "//trim(text)
-        stop 2, quiet=.true.
-    end subroutine fail
 
     subroutine usage()
         write (output_unit, "(a)") &
             "usage: "//name//" [key=value ...]", &
             "", &
-            "Compares the methods of issue 4 on the definition's scene (p = 4, d = a = v0 = 1)", &
-            "against the reference engine (real128): the engine in sp, dp, xdp, qp; absolute", &
+            "Compares four methods on the definition's scene (p = 4, d = a = v0 = 1) against", &
+            "the reference engine (real128): the engine in each real kind built; absolute", &
             "variables in dp, qp; GSL ODE integration (rk8pd, rkf45) with state events; fixed", &
             "time steps. Writes into the directory `out`:", &
             "  methods_work_precision.tsv  CPU time and errors per scene, method, setting", &

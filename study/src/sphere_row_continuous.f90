@@ -1,4 +1,4 @@
-!> Method 3 of issue 4: the equations of motion (4) integrated by GSL's
+!> Method 3 of the comparison: the equations of motion (4) integrated by GSL's
 !> `gsl_odeiv2` (real64), each gap watched as a state event.
 !>
 !> The state vector holds the definition's relative variables: the p-1 gaps

@@ -2,10 +2,12 @@
 !> through bind(C) interfaces written against the GSL 2 headers (gsl_rng.h,
 !> gsl_sort_double.h, gsl_statistics_double.h, gsl_cdf.h).
 !>
-!> This is the only place where `c_double`, `c_size_t` and `c_long` appear:
-!> the rest of the package passes `real(dp)` and converts sizes here, and a
-!> build on a platform where `dp` were not `c_double` would fail to compile at
-!> the call sites instead of passing wrong bits.
+!> The C types (`c_double`, `c_size_t`, `c_long`) appear only here and at the
+!> other C boundary, the ODE integrator (sphere_row_gsl_ode and its callbacks in
+!> sphere_row_continuous): the rest of the package passes `real(dp)` and
+!> converts sizes here, and a build on a platform where `dp` were not
+!> `c_double` would fail to compile at the call sites instead of passing wrong
+!> bits.
 !>
 !> The CDF routines and the quantile of sorted data only read their
 !> arguments, so they are declared `pure`, which lets the statistics helpers

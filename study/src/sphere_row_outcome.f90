@@ -1,7 +1,7 @@
 !> The common record of a run of any method, and its comparison with a
 !> reference run.
 !>
-!> Every method of issue 4 (the engine in any kind, absolute variables, ODE
+!> Every method of the comparison (the engine in any kind, absolute variables, ODE
 !> integration, time stepping) reports into one `outcome_t` in real128, so that
 !> a study compares them with one piece of code. Converting a method's own kind
 !> to real128 is exact, so nothing is lost on the way.

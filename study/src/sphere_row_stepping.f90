@@ -1,4 +1,4 @@
-!> Method 4 of issue 4: fixed time steps (real64), the simplest treatment a
+!> Method 4 of the comparison: fixed time steps (real64), the simplest treatment a
 !> simulation package offers.
 !>
 !> The state is the definition's relative variables (gaps y_i, rates dy_i, x_1

@@ -1,5 +1,5 @@
-!> Tests of the methods compared with the engine (issue 4): each runs its
-!> fastest scenes against the reference (the engine in real128, tol = 0), with
+!> Tests of the methods compared with the engine: each runs its fastest
+!> scenes against the reference (the engine in real128, tol = sqrt(tiny)), with
 !> tolerances that follow from the method's own error.
 module test_methods
     use, intrinsic :: iso_fortran_env, only: int64
