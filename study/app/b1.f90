@@ -10,6 +10,7 @@ program c12_b1
     use sphere_row_analysis, only: sequence_of, sequence_text, sequence_hash, tail_period, &
         critical_restitution, bisect_changes
     use sphere_row_study_cli, only: start_program, take_out, stop_unless_normal
+    use sphere_row_sorting, only: sort
     implicit none
     character(len=*), parameter :: name = "c12-b1"
     !> Class of a run with a collapse: its count depends on tol, not on e alone.
@@ -251,22 +252,6 @@ contains
             class = sequence_hash(pairs)
         end if
     end subroutine classify
-
-    pure subroutine sort(x)
-        real(qp), intent(inout) :: x(:)
-        integer :: i, j
-        real(qp) :: key
-        do i = 2, size(x)
-            key = x(i)
-            j = i - 1
-            do while (j >= 1)
-                if (x(j) <= key) exit
-                x(j + 1) = x(j)
-                j = j - 1
-            end do
-            x(j + 1) = key
-        end do
-    end subroutine sort
 
 
     subroutine usage()

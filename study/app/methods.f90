@@ -17,6 +17,7 @@ program c12_methods
         stepper_rkf45
     use sphere_row_kind_engines, only: built_kinds, kind_info, kind_info_t
     use sphere_row_study_cli, only: start_program, fail, stop_unless_normal
+    use sphere_row_sorting, only: median
     implicit none
 
     character(len=*), parameter :: name = "c12-methods"
@@ -402,28 +403,6 @@ contains
         end do
         seconds = median(samples)
     end subroutine time_runs
-
-    pure real(dp) function median(x)
-        real(dp), intent(in) :: x(:)
-        real(dp) :: s(size(x)), swap
-        integer :: i, j
-        s = x
-        do i = 2, size(s)
-            swap = s(i)
-            j = i - 1
-            do while (j >= 1)
-                if (s(j) <= swap) exit
-                s(j + 1) = s(j)
-                j = j - 1
-            end do
-            s(j + 1) = swap
-        end do
-        if (mod(size(s), 2) == 1) then
-            median = s(size(s)/2 + 1)
-        else
-            median = 0.5_dp*(s(size(s)/2) + s(size(s)/2 + 1))
-        end if
-    end function median
 
     subroutine scene_at(e, scene)
         real(qp), intent(in) :: e
