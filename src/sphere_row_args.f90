@@ -572,7 +572,8 @@ contains
         if (allocated(error)) return
         first = verify(text, " ")
         if (first == 0) then
-            call fatal_error(error, where//"empty; allowed a namelist group &scene ... /")
+            call fatal_error(error, where//"empty (or not a file); allowed a namelist group " &
+                //"&scene ... /")
             return
         end if
         last = scan(text(first:), " ") + first - 1

@@ -3,6 +3,7 @@ program check
     use testsuite, only: run_tests
     use test_engine, only: collect_engine
     use test_cli, only: collect_cli
+    use test_front, only: collect_front
     use test_study, only: collect_study
     use test_monte_carlo, only: collect_monte_carlo
     use test_methods, only: collect_methods
@@ -11,6 +12,7 @@ program check
     passed = 0
     failed = 0
     call run_tests("engine", collect_engine(), passed, failed)
+    call run_tests("front", collect_front(), passed, failed)
     call run_tests("cli", collect_cli(), passed, failed)
     call run_tests("study", collect_study(), passed, failed)
     call run_tests("monte_carlo", collect_monte_carlo(), passed, failed)
