@@ -486,7 +486,8 @@ contains
                     //": allowed yes or no")
                 return
             end select
-        case (key_word)
+        case default
+            ! a word: any non-empty printable text
             if (len(key%text) == 0 .or. has_control(key%text)) then
                 call fatal_error(error, where//key%name//" = "//printable(key%text) &
                     //": allowed "//key%allowed)
@@ -1468,11 +1469,12 @@ contains
         integer :: i
         wants_help = .false.
         do i = 1, size(args)
-            if (is_help(trim(args(i)))) wants_help = .true.
+            if (is_help(args(i))) wants_help = .true.
         end do
     end function wants_help
 
     !> Split `key=value`; `stat` is status_invalid if there is no `=` or no key.
+    ! allow(assumed-size-character-intent): fixed-length messages of the older interface
     pure subroutine split_key_value(arg, key, value, stat, msg)
         character(len=*), intent(in) :: arg
         character(len=:), allocatable, intent(out) :: key, value
@@ -1494,6 +1496,7 @@ contains
     end subroutine split_key_value
 
     !> read_real with a status and a fixed-length message.
+    ! allow(assumed-size-character-intent): fixed-length messages of the older interface
     pure subroutine parse_real(key, text, x, stat, msg)
         character(len=*), intent(in) :: key, text
         real(qp), intent(out) :: x
@@ -1505,6 +1508,7 @@ contains
     end subroutine parse_real
 
     !> read_int with a status and a fixed-length message.
+    ! allow(assumed-size-character-intent): fixed-length messages of the older interface
     pure subroutine parse_int(key, text, n, stat, msg)
         character(len=*), intent(in) :: key, text
         integer, intent(out) :: n
@@ -1516,6 +1520,7 @@ contains
     end subroutine parse_int
 
     !> read_reals with a status and a fixed-length message.
+    ! allow(assumed-size-character-intent): fixed-length messages of the older interface
     pure subroutine parse_reals(key, text, xs, stat, msg)
         character(len=*), intent(in) :: key, text
         real(qp), allocatable, intent(out) :: xs(:)
@@ -1527,6 +1532,7 @@ contains
     end subroutine parse_reals
 
     !> Read `yes` or `no`.
+    ! allow(assumed-size-character-intent): fixed-length messages of the older interface
     pure subroutine parse_flag(key, text, flag, stat, msg)
         character(len=*), intent(in) :: key, text
         logical, intent(out) :: flag
@@ -1546,6 +1552,7 @@ contains
         end select
     end subroutine parse_flag
 
+    ! allow(assumed-size-character-intent): fixed-length messages of the older interface
     pure subroutine to_status(error, stat, msg)
         type(error_t), allocatable, intent(in) :: error
         integer, intent(out) :: stat
@@ -1562,6 +1569,7 @@ contains
     !> scene_from_cli; `used(i)` tells which arguments were taken. Arguments
     !> that are not scene keys are left for the caller, who must refuse any it
     !> does not know (see unused_arg). `e_default` replaces the default e.
+    ! allow(assumed-size-character-intent): fixed-length messages of the older interface
     subroutine scene_from_args(args, scene, used, stat, msg, e_default)
         character(len=*), intent(in) :: args(:)
         type(scene_t), intent(out) :: scene
@@ -1610,6 +1618,7 @@ contains
     !> The optional `key=value` among args read into x, which keeps its value
     !> when the key is absent; a value outside [lo, hi] is refused with a
     !> message naming `allowed` (default: lo <= key <= hi).
+    ! allow(assumed-size-character-intent): fixed-length messages of the older interface
     subroutine real_key(args, used, key, x, lo, hi, stat, msg, allowed)
         character(len=*), intent(in) :: args(:), key
         logical, intent(inout) :: used(:)
@@ -1641,6 +1650,7 @@ contains
     end subroutine real_key
 
     !> The optional integer `key=value` among args read into n, as real_key.
+    ! allow(assumed-size-character-intent): fixed-length messages of the older interface
     subroutine int_key(args, used, key, n, lo, hi, stat, msg)
         character(len=*), intent(in) :: args(:), key
         logical, intent(inout) :: used(:)
@@ -1667,6 +1677,7 @@ contains
     end subroutine int_key
 
     !> Message for the first argument that no key of the program took.
+    ! allow(assumed-size-character-intent): fixed-length messages of the older interface
     pure subroutine unused_arg(args, used, allowed, stat, msg)
         character(len=*), intent(in) :: args(:)
         logical, intent(in) :: used(:)

@@ -302,7 +302,7 @@ contains
         integer :: unit, ios
         path = program_path(name)
         if (len(path) == 0) return
-        open (newunit=unit, file=path, status="old", iostat=ios)
+        open (newunit=unit, file=path, status="old", action="read", iostat=ios)
         if (ios == 0) close (unit, status="delete")
         path = program_path(name)
     end function fresh_program_path
