@@ -12,6 +12,21 @@
 !> given and what is allowed; `fail` prints it as one line and stops with
 !> exit status 2.
 !>
+!> A program with the scene keys and keys of its own:
+!>
+!>     type(cli_t) :: cli
+!>     type(scene_t) :: scene
+!>     type(error_t), allocatable :: error
+!>     cli%name = "c12-b2"
+!>     cli%synopsis = "[FILE] [key=value ...]"
+!>     call add_scene_keys(cli)
+!>     call cli%add_word("out", "results", "directory of the tables")
+!>     call cli%add_int("n_grid", "801", "values of e on the grid", lo=2)
+!>     call read_command_line(cli)
+!>     call scene_from_cli(cli, scene, error)
+!>     if (allocated(error)) call fail(cli%name, error)
+!>     n_grid = cli%get_int("n_grid")
+!>
 !> The procedures after the kit (get_args, scene_from_args, take_key, ...) are
 !> the older status-and-message interface of the study programs, now built on
 !> the same strict readers.
@@ -89,7 +104,6 @@ module sphere_row_args
         real(qp) :: x = 0.0_qp
         real(qp), allocatable :: xs(:)
         logical :: flag = .false.
-        logical :: set = .false.
     end type key_t
 
     !> A program's command line: its keys and the text of its `--help`.
@@ -344,7 +358,6 @@ contains
     subroutine reset_value(key)
         type(key_t), intent(inout) :: key
         key%given = .false.
-        key%set = .false.
         key%source = ""
         key%text = ""
         key%n = 0
@@ -494,7 +507,6 @@ contains
                 return
             end if
         end select
-        key%set = .true.
     end subroutine read_value
 
     pure logical function in_range(key, x)

@@ -90,6 +90,7 @@ contains
             bad("e=\s0.5", 2, "e =  0.5: not a number"), &
             bad("e=0.5\n1", 2, "e = 0.5\n1: not a number"), &
             bad("e=0.5\t", 2, "e = 0.5\t: not a number"), &
+            bad("e="//repeat("7x", 600), 2, "e = "//repeat("7x", 600)//": not a number"), &
             ! numbers real(16) cannot hold
             bad("v0=1e5000", 2, "v0 = 1e5000: beyond the largest real(16)"), &
             bad("v0=-1e5000", 2, "v0 = -1e5000: beyond the largest real(16)"), &
