@@ -4,6 +4,8 @@
 #                        prerequisites first)
 #   make study           every task's tables, figures and results/summary.md
 #   make check-results   regenerate the study elsewhere and compare with results/
+#   make docs            API documentation (FORD) in build/docs/index.html
+#   make lint            the Fortran linter fortitude, rules in fortitude.toml
 #   make help            this list
 #
 # Programs -> tables -> figures: each table is made by its study program, each
@@ -50,7 +52,8 @@ PNG := $(FIGURES:%=$(RESULTS)/%.png) $(RESULTS)/methods_work_precision.png \
 SVG := $(FIGURES:%=$(RESULTS)/%.svg) $(RESULTS)/methods_work_precision.svg \
        $(RESULTS)/methods_stability.svg
 
-.PHONY: all help prereqs test check-layers study tables figures bench check-results clean
+.PHONY: all help prereqs test check-layers study tables figures bench check-results \
+        docs lint clean
 
 all: study
 
@@ -165,6 +168,14 @@ check-results: prereqs ## regenerate the tables in build/ and compare with resul
 	rm -rf build/check
 	$(MAKE) --no-print-directory RESULTS=build/check tables build/check/answers.tsv
 	$(BIN)/tsv-compare committed=$(RESULTS) fresh=build/check
+
+docs: ## API documentation from the !> comments (FORD) in build/docs/index.html
+	@bash .ci/prereqs docs
+	ford ford.md
+
+lint: ## check the Fortran sources with fortitude (rules and exceptions: fortitude.toml)
+	@bash .ci/prereqs lint
+	fortitude check src app test study/src study/app study/test tools/testsuite/src
 
 clean: ## remove the build directories (results/ stays: it is committed)
 	rm -rf build study/build tools/testsuite/build

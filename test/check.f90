@@ -4,11 +4,13 @@ program check
     use testsuite, only: run_tests
     use test_engine, only: collect_engine
     use test_cli, only: collect_cli
+    use test_front, only: collect_front
     implicit none
     integer :: passed, failed
     passed = 0
     failed = 0
     call run_tests("engine", collect_engine(), passed, failed)
+    call run_tests("front", collect_front(), passed, failed)
     call run_tests("cli", collect_cli(), passed, failed)
     print "(i0, ' passed, ', i0, ' failed')", passed, failed
     if (failed > 0) stop 1, quiet=.true.

@@ -23,12 +23,15 @@ module sphere_row_kind_engines
     public :: kind_info_t, kind_engine_t, built_kinds, kind_built, kind_info
     public :: new_kind_engine, convert_scene
 
+#ifdef SPHERE_ROW_XDP
     !> Every kind built, from the narrowest to the widest.
     type(kind_info_t), parameter :: built_kinds(*) = [kind_info_sp, kind_info_dp, &
-#ifdef SPHERE_ROW_XDP
-        kind_info_xdp, &
-#endif
+        kind_info_xdp, kind_info_qp]
+#else
+    !> Every kind built, from the narrowest to the widest.
+    type(kind_info_t), parameter :: built_kinds(*) = [kind_info_sp, kind_info_dp, &
         kind_info_qp]
+#endif
 
 contains
 
@@ -66,6 +69,8 @@ contains
 #endif
         case (qp)
             allocate (engine_qp_t :: engine)
+        case default
+            ! a kind not built: engine stays unallocated
         end select
     end subroutine new_kind_engine
 
