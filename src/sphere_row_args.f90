@@ -26,15 +26,11 @@
 !>     call scene_from_cli(cli, scene, error)
 !>     if (allocated(error)) call fail(cli%name, error)
 !>     n_grid = cli%get_int("n_grid")
-!>
-!> The procedures after the kit (get_args, scene_from_args, take_key, ...) are
-!> the older status-and-message interface of the study programs, now built on
-!> the same strict readers.
 module sphere_row_args
     use, intrinsic :: iso_fortran_env, only: error_unit, output_unit, int64, iostat_end, &
         iostat_eor
     use sphere_row_kinds, only: qp
-    use sphere_row_status, only: status_normal, status_invalid
+    use sphere_row_status, only: status_normal
     use sphere_row_error, only: error_t, fatal_error, error_io
     use sphere_row, only: scene_t, scene_init
     implicit none
@@ -45,9 +41,6 @@ module sphere_row_args
     public :: short_text
     ! the scene keys
     public :: add_scene_keys, scene_from_cli, max_spheres
-    ! the older interface of the study programs
-    public :: get_args, split_key_value, parse_real, parse_int, parse_reals, parse_flag
-    public :: scene_from_args, scene_help, unused_arg, wants_help, take_key, real_key, int_key
 
     !> Kinds of value a key takes.
     integer, parameter :: key_int = 1, key_real = 2, key_reals = 3, key_flag = 4, key_word = 5
@@ -159,14 +152,17 @@ contains
     ! the program kit: registration
     ! ------------------------------------------------------------------
 
-    !> Register an integer key, allowed in [lo, hi] (bounds optional).
-    pure subroutine cli_add_int(this, name, default, help, lo, hi, in_file)
+    !> Register an integer key, allowed in [lo, hi] (bounds optional);
+    !> `shown` replaces the default in `--help` (a default of "" is no value).
+    pure subroutine cli_add_int(this, name, default, help, lo, hi, in_file, shown)
         class(cli_t), intent(inout) :: this
         character(len=*), intent(in) :: name, default, help
         integer, intent(in), optional :: lo, hi
         logical, intent(in), optional :: in_file
+        character(len=*), intent(in), optional :: shown
         type(key_t) :: key
         call new_key(key, name, key_int, default, help, in_file)
+        if (present(shown)) key%shown = shown
         if (present(lo)) key%ilo = lo
         if (present(hi)) key%ihi = hi
         if (key%ilo > -huge(1) .and. key%ihi < huge(1)) then
@@ -1319,10 +1315,13 @@ contains
 
     !> Register the keys of a scene: p, e, d, a, gaps, v0, masses, tol,
     !> max_collisions, and scene files. Their defaults are the definition's
-    !> scene (those of scene_t, and a = 1); `e_default` replaces its e.
-    pure subroutine add_scene_keys(cli, e_default)
+    !> scene (those of scene_t, and a = 1); `e_default` replaces its e. A
+    !> program that sets e itself names what sets it in `e_set_by`: the key e
+    !> is then not registered (so refused) and its `--help` says why.
+    pure subroutine add_scene_keys(cli, e_default, e_set_by)
         type(cli_t), intent(inout) :: cli
         real(qp), intent(in), optional :: e_default
+        character(len=*), intent(in), optional :: e_set_by
         type(scene_t) :: defaults
         real(qp) :: e
         e = defaults%e
@@ -1330,8 +1329,13 @@ contains
         cli%files = .true.
         call cli%add_int("p", itoa(defaults%p), "number of spheres", lo=2, hi=max_spheres, &
             in_file=.true.)
-        call cli%add_real("e", short_text(e), "restitution coefficient of every impact", &
-            lo=0.0_qp, hi=1.0_qp, in_file=.true.)
+        if (present(e_set_by)) then
+            if (.not. allocated(cli%about)) cli%about = ""
+            cli%about = cli%about//nl//"The scene key e is not taken: "//e_set_by//" sets e."
+        else
+            call cli%add_real("e", short_text(e), "restitution coefficient of every impact", &
+                lo=0.0_qp, hi=1.0_qp, in_file=.true.)
+        end if
         call cli%add_real("d", short_text(defaults%d), "sphere diameter", lo=0.0_qp, &
             in_file=.true.)
         call cli%add_real("a", "1", "every initial gap", lo=0.0_qp, &
@@ -1362,9 +1366,13 @@ contains
         type(scene_t), intent(out) :: scene
         type(error_t), allocatable, intent(out) :: error
         real(qp), allocatable :: masses(:), gaps(:)
+        type(scene_t) :: defaults
+        real(qp) :: e
         integer :: p, stat
         character(len=400) :: msg
         p = cli%get_int("p")
+        e = defaults%e
+        if (find_key(cli, "e") > 0) e = cli%get_real("e")
         if (cli%given("masses")) then
             masses = cli%get_reals("masses")
             if (size(masses) /= p) then
@@ -1389,7 +1397,7 @@ contains
         end if
         call check_scales(cli, p, cli%get_real("d"), cli%get_real("v0"), masses, gaps, error)
         if (allocated(error)) return
-        call scene_init(scene, stat, msg, p=p, e=cli%get_real("e"), d=cli%get_real("d"), &
+        call scene_init(scene, stat, msg, p=p, e=e, d=cli%get_real("d"), &
             v0=cli%get_real("v0"), tol=cli%get_real("tol"), &
             max_collisions=cli%get_int("max_collisions"), masses=masses, gaps=gaps)
         if (stat /= status_normal) call fatal_error(error, trim(msg))
@@ -1454,274 +1462,5 @@ contains
         call fatal_error(error, origin(cli%keys(key_index(cli, name)))//name//" = " &
             //printable(cli%get_text(name))//": "//why)
     end subroutine refuse_scale
-
-    ! ------------------------------------------------------------------
-    ! the older interface of the study programs
-    ! ------------------------------------------------------------------
-
-    !> All command-line arguments, each trimmed.
-    subroutine get_args(args)
-        character(len=:), allocatable, intent(out) :: args(:)
-        integer :: i, n, length, longest
-        n = command_argument_count()
-        longest = 1
-        do i = 1, n
-            call get_command_argument(i, length=length)
-            longest = max(longest, length)
-        end do
-        allocate (character(len=longest) :: args(n))
-        do i = 1, n
-            call get_command_argument(i, args(i))
-        end do
-    end subroutine get_args
-
-    !> True if any argument asks for the usage text.
-    pure logical function wants_help(args)
-        character(len=*), intent(in) :: args(:)
-        integer :: i
-        wants_help = .false.
-        do i = 1, size(args)
-            if (is_help(args(i))) wants_help = .true.
-        end do
-    end function wants_help
-
-    !> Split `key=value`; `stat` is status_invalid if there is no `=` or no key.
-    ! allow(assumed-size-character-intent): fixed-length messages of the older interface
-    pure subroutine split_key_value(arg, key, value, stat, msg)
-        character(len=*), intent(in) :: arg
-        character(len=:), allocatable, intent(out) :: key, value
-        integer, intent(out) :: stat
-        character(len=*), intent(out) :: msg
-        integer :: i
-        i = index(arg, "=")
-        stat = status_invalid
-        if (i <= 1) then
-            key = ""
-            value = ""
-            msg = "argument '"//printable(trim(arg))//"': allowed key=value (see --help)"
-            return
-        end if
-        key = trim(adjustl(arg(:i - 1)))
-        value = trim(adjustl(arg(i + 1:)))
-        stat = status_normal
-        msg = ""
-    end subroutine split_key_value
-
-    !> read_real with a status and a fixed-length message.
-    ! allow(assumed-size-character-intent): fixed-length messages of the older interface
-    pure subroutine parse_real(key, text, x, stat, msg)
-        character(len=*), intent(in) :: key, text
-        real(qp), intent(out) :: x
-        integer, intent(out) :: stat
-        character(len=*), intent(out) :: msg
-        type(error_t), allocatable :: error
-        call read_real(key, text, x, error)
-        call to_status(error, stat, msg)
-    end subroutine parse_real
-
-    !> read_int with a status and a fixed-length message.
-    ! allow(assumed-size-character-intent): fixed-length messages of the older interface
-    pure subroutine parse_int(key, text, n, stat, msg)
-        character(len=*), intent(in) :: key, text
-        integer, intent(out) :: n
-        integer, intent(out) :: stat
-        character(len=*), intent(out) :: msg
-        type(error_t), allocatable :: error
-        call read_int(key, text, n, error)
-        call to_status(error, stat, msg)
-    end subroutine parse_int
-
-    !> read_reals with a status and a fixed-length message.
-    ! allow(assumed-size-character-intent): fixed-length messages of the older interface
-    pure subroutine parse_reals(key, text, xs, stat, msg)
-        character(len=*), intent(in) :: key, text
-        real(qp), allocatable, intent(out) :: xs(:)
-        integer, intent(out) :: stat
-        character(len=*), intent(out) :: msg
-        type(error_t), allocatable :: error
-        call read_reals(key, text, xs, error)
-        call to_status(error, stat, msg)
-    end subroutine parse_reals
-
-    !> Read `yes` or `no`.
-    ! allow(assumed-size-character-intent): fixed-length messages of the older interface
-    pure subroutine parse_flag(key, text, flag, stat, msg)
-        character(len=*), intent(in) :: key, text
-        logical, intent(out) :: flag
-        integer, intent(out) :: stat
-        character(len=*), intent(out) :: msg
-        stat = status_normal
-        msg = ""
-        select case (text)
-        case ("yes")
-            flag = .true.
-        case ("no")
-            flag = .false.
-        case default
-            flag = .false.
-            stat = status_invalid
-            msg = key//" = "//printable(text)//": allowed yes or no"
-        end select
-    end subroutine parse_flag
-
-    ! allow(assumed-size-character-intent): fixed-length messages of the older interface
-    pure subroutine to_status(error, stat, msg)
-        type(error_t), allocatable, intent(in) :: error
-        integer, intent(out) :: stat
-        character(len=*), intent(out) :: msg
-        stat = status_normal
-        msg = ""
-        if (.not. allocated(error)) return
-        stat = status_invalid
-        msg = error%message
-    end subroutine to_status
-
-    !> The scene of the scene keys among `args` (and of a scene file if one
-    !> argument has no `=`), with the rules of add_scene_keys and
-    !> scene_from_cli; `used(i)` tells which arguments were taken. Arguments
-    !> that are not scene keys are left for the caller, who must refuse any it
-    !> does not know (see unused_arg). `e_default` replaces the default e.
-    ! allow(assumed-size-character-intent): fixed-length messages of the older interface
-    subroutine scene_from_args(args, scene, used, stat, msg, e_default)
-        character(len=*), intent(in) :: args(:)
-        type(scene_t), intent(out) :: scene
-        logical, intent(out) :: used(:)
-        integer, intent(out) :: stat
-        character(len=*), intent(out) :: msg
-        real(qp), intent(in), optional :: e_default
-        type(cli_t) :: cli
-        type(string_t), allocatable :: strings(:)
-        type(error_t), allocatable :: error
-        integer :: i
-        cli%name = "scene"
-        cli%synopsis = ""
-        call add_scene_keys(cli, e_default)
-        allocate (strings(size(args)))
-        do i = 1, size(args)
-            strings(i)%s = trim(args(i))
-        end do
-        call cli%parse(strings, error, used)
-        if (.not. allocated(error)) call scene_from_cli(cli, scene, error)
-        call to_status(error, stat, msg)
-    end subroutine scene_from_args
-
-    !> The value of the last `key=value` argument among those not yet used;
-    !> `found` tells whether there was one, and it is marked used.
-    pure subroutine take_key(args, used, key, value, found)
-        character(len=*), intent(in) :: args(:)
-        logical, intent(inout) :: used(:)
-        character(len=*), intent(in) :: key
-        character(len=:), allocatable, intent(out) :: value
-        logical, intent(out) :: found
-        integer :: i, j
-        found = .false.
-        value = ""
-        do i = 1, size(args)
-            if (used(i)) cycle
-            j = index(args(i), "=")
-            if (j <= 1) cycle
-            if (trim(adjustl(args(i)(:j - 1))) /= key) cycle
-            value = trim(adjustl(args(i)(j + 1:)))
-            used(i) = .true.
-            found = .true.
-        end do
-    end subroutine take_key
-
-    !> The optional `key=value` among args read into x, which keeps its value
-    !> when the key is absent; a value outside [lo, hi] is refused with a
-    !> message naming `allowed` (default: lo <= key <= hi).
-    ! allow(assumed-size-character-intent): fixed-length messages of the older interface
-    subroutine real_key(args, used, key, x, lo, hi, stat, msg, allowed)
-        character(len=*), intent(in) :: args(:), key
-        logical, intent(inout) :: used(:)
-        real(qp), intent(inout) :: x
-        real(qp), intent(in) :: lo, hi
-        integer, intent(out) :: stat
-        character(len=*), intent(out) :: msg
-        character(len=*), intent(in), optional :: allowed
-        character(len=:), allocatable :: text
-        logical :: found
-        real(qp) :: value
-        stat = status_normal
-        msg = ""
-        call take_key(args, used, key, text, found)
-        if (.not. found) return
-        call parse_real(key, text, value, stat, msg)
-        if (stat /= status_normal) return
-        if (.not. (value >= lo .and. value <= hi)) then
-            stat = status_invalid
-            if (present(allowed)) then
-                msg = key//" = "//text//": allowed "//allowed
-            else
-                msg = key//" = "//text//": allowed "//short_text(lo, 6)//" <= "//key//" <= " &
-                    //short_text(hi, 6)
-            end if
-            return
-        end if
-        x = value
-    end subroutine real_key
-
-    !> The optional integer `key=value` among args read into n, as real_key.
-    ! allow(assumed-size-character-intent): fixed-length messages of the older interface
-    subroutine int_key(args, used, key, n, lo, hi, stat, msg)
-        character(len=*), intent(in) :: args(:), key
-        logical, intent(inout) :: used(:)
-        integer, intent(inout) :: n
-        integer, intent(in) :: lo, hi
-        integer, intent(out) :: stat
-        character(len=*), intent(out) :: msg
-        character(len=:), allocatable :: text
-        logical :: found
-        integer :: value
-        stat = status_normal
-        msg = ""
-        call take_key(args, used, key, text, found)
-        if (.not. found) return
-        call parse_int(key, text, value, stat, msg)
-        if (stat /= status_normal) return
-        if (value < lo .or. value > hi) then
-            stat = status_invalid
-            msg = key//" = "//text//": allowed "//itoa(lo)//" <= "//key
-            if (hi < huge(hi)) msg = trim(msg)//" <= "//itoa(hi)
-            return
-        end if
-        n = value
-    end subroutine int_key
-
-    !> Message for the first argument that no key of the program took.
-    ! allow(assumed-size-character-intent): fixed-length messages of the older interface
-    pure subroutine unused_arg(args, used, allowed, stat, msg)
-        character(len=*), intent(in) :: args(:)
-        logical, intent(in) :: used(:)
-        character(len=*), intent(in) :: allowed
-        integer, intent(out) :: stat
-        character(len=*), intent(out) :: msg
-        integer :: i, j
-        stat = status_normal
-        msg = ""
-        do i = 1, size(args)
-            if (used(i)) cycle
-            stat = status_invalid
-            j = index(args(i), "=")
-            if (j > 1) then
-                msg = printable(args(i)(:j - 1))//" = "//printable(trim(args(i)(j + 1:))) &
-                    //": unknown key; allowed keys are "//allowed
-            else
-                msg = "argument '"//printable(trim(args(i)))//"': allowed key=value with keys " &
-                    //allowed
-            end if
-            return
-        end do
-    end subroutine unused_arg
-
-    !> Usage lines for the scene keys common to every program.
-    pure function scene_help() result(text)
-        character(len=:), allocatable :: text
-        type(cli_t) :: cli
-        cli%name = "scene"
-        call add_scene_keys(cli)
-        text = key_lines(cli)
-        text = text(:len(text) - 1)
-    end function scene_help
 
 end module sphere_row_args

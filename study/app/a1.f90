@@ -6,14 +6,14 @@ program c12_a1
     use sphere_row, only: qp, dp, scene_t, run_t, event_log_t, scene_dp_t, run_dp_t, &
         scene_init, simulate, gaps_at, str, status_word, status_normal, event_collision, &
         event_collapse
-    use sphere_row_args, only: scene_from_args, real_key, unused_arg, scene_help
     use sphere_row_output, only: open_table, write_answer, answer_header, tab, itoa
-    use sphere_row_study_cli, only: start_program, take_out, fail, stop_unless_normal
+    use sphere_row_study_cli, only: cli_t, add_scene_keys, start_program, read_keys, fail, &
+        stop_unless_normal
     implicit none
-    character(len=*), parameter :: name = "c12-a1"
-    character(len=:), allocatable :: args(:), out, header, line
+    character(len=*), parameter :: nl = new_line("a")
+    type(cli_t) :: cli
+    character(len=:), allocatable :: out, header, line
     character(len=300) :: msg
-    logical, allocatable :: used(:)
     type(scene_t) :: scene
     type(run_t) :: run
     type(event_log_t) :: log
@@ -23,15 +23,15 @@ program c12_a1
     real(qp), allocatable :: y(:)
     integer :: stat, unit, i, j, n_window
 
-    call start_program(name, usage, args, used)
-    call scene_from_args(args, scene, used, stat, msg, e_default=0.2_qp)
-    call stop_unless_normal(stat, msg)
-    call take_out(args, used, out)
-    t_max = 15.0_qp
-    call real_key(args, used, "t_max", t_max, tiny(1.0_qp), huge(1.0_qp), stat, msg, "t_max > 0")
-    call stop_unless_normal(stat, msg)
-    call unused_arg(args, used, "out, t_max and the scene keys (see --help)", stat, msg)
-    call stop_unless_normal(stat, msg)
+    call start_program(cli, "c12-a1", &
+        "C12 task a1: gaps y_i(t) of the definition's scene at e = 0.2, tabulated at"//nl// &
+        "their breakpoints (every event) and at the ends of 0 <= t <= t_max."//nl// &
+        "Writes OUT/a1_paths.tsv and OUT/a1_answers.tsv.")
+    call cli%add_real("t_max", "15", "end of the time window", lo=0.0_qp, lo_open=.true.)
+    call add_scene_keys(cli, e_default=0.2_qp)
+    call read_keys(cli, scene)
+    out = cli%get_word("out")
+    t_max = cli%get_real("t_max")
 
     call simulate(scene, run, log)
     if (run%status /= status_normal .and. run%n == 0) call fail(run%message)
@@ -109,18 +109,5 @@ program c12_a1
             "gap at the last collision; afterwards it grows at dy = "//str(run%dy(i)))
     end do
     close (unit)
-
-contains
-
-
-    subroutine usage()
-        print "(a)", "usage: "//name//" [key=value ...]", "", &
-            "C12 task a1: gaps y_i(t) of the definition's scene at e = 0.2, tabulated at", &
-            "their breakpoints (every event) and at the ends of 0 <= t <= t_max.", &
-            "Writes OUT/a1_paths.tsv and OUT/a1_answers.tsv.", "", &
-            "  out=results         output directory", &
-            "  t_max=15            end of the time window, > 0", &
-            scene_help()
-    end subroutine usage
 
 end program c12_a1

@@ -3,34 +3,32 @@
 program c12_a2
     use sphere_row, only: qp, scene_t, run_t, simulate, str, status_word, status_normal, &
         status_collapsed
-    use sphere_row_args, only: scene_from_args, real_key, unused_arg, scene_help
     use sphere_row_output, only: open_table, write_answer, answer_header, tab, itoa
-    use sphere_row_study_cli, only: start_program, take_out, fail, stop_unless_normal
+    use sphere_row_study_cli, only: cli_t, add_scene_keys, start_program, read_keys, fail, &
+        stop_unless_normal
     implicit none
-    character(len=*), parameter :: name = "c12-a2"
-    character(len=:), allocatable :: args(:), out, header
+    character(len=*), parameter :: nl = new_line("a")
+    type(cli_t) :: cli
+    character(len=:), allocatable :: out, header
     character(len=300) :: msg
-    logical, allocatable :: used(:)
     type(scene_t) :: scene
     type(run_t) :: elastic, plastic
     real(qp) :: e_plastic, spread_max, spread, plain
     real(qp), allocatable :: v_elastic(:)
     integer :: stat, unit, i, p
 
-    call start_program(name, usage, args, used)
-    call scene_from_args(args, scene, used, stat, msg, e_default=1.0_qp)
-    call stop_unless_normal(stat, msg)
-    call take_out(args, used, out)
-    e_plastic = 0.1_qp
-    call real_key(args, used, "e_plastic", e_plastic, 0.0_qp, 1.0_qp, stat, msg)
-    call stop_unless_normal(stat, msg)
-    spread_max = 1.0e-30_qp
-    call real_key(args, used, "spread_max", spread_max, tiny(1.0_qp), huge(1.0_qp), stat, msg, &
-        "spread_max > 0")
-    call stop_unless_normal(stat, msg)
-    call unused_arg(args, used, "out, e_plastic, spread_max and the scene keys (see --help)", &
-        stat, msg)
-    call stop_unless_normal(stat, msg)
+    call start_program(cli, "c12-a2", &
+        "C12 task a2: final velocities for e = 1 and for the quasi-plastic case."//nl// &
+        "Writes OUT/a2_velocities.tsv and OUT/a2_answers.tsv.")
+    call cli%add_real("e_plastic", "0.1", "restitution of the quasi-plastic case", &
+        lo=0.0_qp, hi=1.0_qp)
+    call cli%add_real("spread_max", "1e-30", &
+        "velocities count as equal if (max v - min v)/v0 <= this", lo=0.0_qp, lo_open=.true.)
+    call add_scene_keys(cli, e_set_by="each case (1 and e_plastic)")
+    call read_keys(cli, scene)
+    out = cli%get_word("out")
+    e_plastic = cli%get_real("e_plastic")
+    spread_max = cli%get_real("spread_max")
 
     p = scene%p
     scene%e = 1.0_qp
@@ -102,17 +100,5 @@ contains
         end do
         write (unit, "(a)") line//tab//str(maxval(run%v) - minval(run%v))
     end subroutine row
-
-
-    subroutine usage()
-        print "(a)", "usage: "//name//" [key=value ...]", "", &
-            "C12 task a2: final velocities for e = 1 and for the quasi-plastic case.", &
-            "Writes OUT/a2_velocities.tsv and OUT/a2_answers.tsv.", "", &
-            "  out=results         output directory", &
-            "  e_plastic=0.1       restitution of the quasi-plastic case, 0 <= e <= 1", &
-            "  spread_max=1e-30    velocities count as equal if (max v - min v)/v0 <= this", &
-            scene_help(), &
-            "  (the scene key e is ignored: the cases fix it)"
-    end subroutine usage
 
 end program c12_a2

@@ -4,20 +4,19 @@
 program c12_b1
     use sphere_row, only: qp, scene_t, run_t, event_log_t, simulate, str, status_word, &
         status_normal, status_collapsed
-    use sphere_row_args, only: scene_from_args, real_key, int_key, unused_arg, &
-        scene_help
     use sphere_row_output, only: open_table, write_answer, answer_header, tab, itoa
     use sphere_row_analysis, only: sequence_of, sequence_text, sequence_hash, tail_period, &
         critical_restitution, bisect_changes
-    use sphere_row_study_cli, only: start_program, take_out, stop_unless_normal
+    use sphere_row_study_cli, only: cli_t, add_scene_keys, start_program, read_keys, &
+        stop_unless_normal
     use sphere_row_sorting, only: sort
     implicit none
-    character(len=*), parameter :: name = "c12-b1"
+    character(len=*), parameter :: nl = new_line("a")
     !> Class of a run with a collapse: its count depends on tol, not on e alone.
     integer(8), parameter :: collapsed_class = 0_8
-    character(len=:), allocatable :: args(:), out
+    type(cli_t) :: cli
+    character(len=:), allocatable :: out
     character(len=300) :: msg
-    logical, allocatable :: used(:)
     type(scene_t) :: scene
     type(run_t) :: run
     type(event_log_t) :: events
@@ -31,27 +30,24 @@ program c12_b1
     integer(8), allocatable :: class_scan(:)
     integer(8) :: class_mid
 
-    call start_program(name, usage, args, used)
-    call scene_from_args(args, scene, used, stat, msg)
-    call stop_unless_normal(stat, msg)
-    call take_out(args, used, out)
-    n_scan = 2001
-    call int_key(args, used, "n_scan", n_scan, 3, huge(1), stat, msg)
-    call stop_unless_normal(stat, msg)
-    resolution = 1.0e-12_qp
-    call real_key(args, used, "resolution", resolution, 1.0e-30_qp, 0.1_qp, stat, msg, &
-        "1e-30 <= resolution <= 0.1")
-    call stop_unless_normal(stat, msg)
-    n_bisect_max = 300
-    call int_key(args, used, "n_bisect_max", n_bisect_max, 1, huge(1), stat, msg)
-    call stop_unless_normal(stat, msg)
-    tol_fine = 1.0e-4000_qp
-    call real_key(args, used, "tol_fine", tol_fine, 1.0e-4900_qp, 0.5_qp, stat, msg, &
-        "1e-4900 <= tol_fine <= 0.5")
-    call stop_unless_normal(stat, msg)
-    call unused_arg(args, used, "out, n_scan, resolution, n_bisect_max, tol_fine and the "// &
-        "scene keys (see --help)", stat, msg)
-    call stop_unless_normal(stat, msg)
+    call start_program(cli, "c12-b1", &
+        "C12 task b1: n(e) from e = 1 down to 0, its intervals of constant n and"//nl// &
+        "collision sequence, and the critical restitution of inelastic collapse."//nl// &
+        "Writes OUT/b1_scan.tsv, b1_intervals.tsv, b1_critical.tsv, b1_answers.tsv.")
+    call cli%add_int("n_scan", "2001", "points of the scan of e in [0, 1]", lo=3)
+    call cli%add_real("resolution", "1e-12", "width to which each change of n is bisected", &
+        lo=1.0e-30_qp, hi=0.1_qp)
+    call cli%add_int("n_bisect_max", "300", "changes with larger n on both sides are not " &
+        //"bisected", lo=1)
+    call cli%add_real("tol_fine", "1e-4000", "tolerance of the runs near e_crit", &
+        lo=1.0e-4900_qp, hi=0.5_qp)
+    call add_scene_keys(cli, e_set_by="the scan of e")
+    call read_keys(cli, scene)
+    out = cli%get_word("out")
+    n_scan = cli%get_int("n_scan")
+    resolution = cli%get_real("resolution")
+    n_bisect_max = cli%get_int("n_bisect_max")
+    tol_fine = cli%get_real("tol_fine")
 
     ! 1. dense scan of e from 1 down to 0 with the scene's own tolerance
     allocate (e_scan(n_scan), n_scan_runs(n_scan), status_scan(n_scan), class_scan(n_scan))
@@ -252,20 +248,5 @@ contains
             class = sequence_hash(pairs)
         end if
     end subroutine classify
-
-
-    subroutine usage()
-        print "(a)", "usage: "//name//" [key=value ...]", "", &
-            "C12 task b1: n(e) from e = 1 down to 0, its intervals of constant n and", &
-            "collision sequence, and the critical restitution of inelastic collapse.", &
-            "Writes OUT/b1_scan.tsv, b1_intervals.tsv, b1_critical.tsv, b1_answers.tsv.", "", &
-            "  out=results         output directory", &
-            "  n_scan=2001         points of the scan of e in [0, 1], >= 3", &
-            "  resolution=1e-12    width to which each change of n is bisected", &
-            "  n_bisect_max=300    changes with larger n on both sides are not bisected", &
-            "                      (with the default tol, n stays below ~150 anyway)", &
-            "  tol_fine=1e-4000    tolerance of the runs near e_crit, 1e-4900 <= tol <= 0.5", &
-            scene_help()
-    end subroutine usage
 
 end program c12_b1

@@ -4,18 +4,18 @@
 program c12_b2
     use sphere_row, only: qp, scene_t, run_t, event_log_t, simulate, str, status_word, &
         status_normal
-    use sphere_row_args, only: scene_from_args, int_key, unused_arg, scene_help
     use sphere_row_output, only: open_table, write_answer, answer_header, tab, itoa
     use sphere_row_analysis, only: sequence_of, sequence_text, sequence_hash, &
         sequence_polynomials, poly_eval
-    use sphere_row_study_cli, only: start_program, take_out, stop_unless_normal
+    use sphere_row_study_cli, only: cli_t, add_scene_keys, start_program, read_keys, &
+        stop_unless_normal
     implicit none
-    character(len=*), parameter :: name = "c12-b2"
+    character(len=*), parameter :: nl = new_line("a")
     !> Sequences longer than this are not written out as polynomials.
     integer, parameter :: max_listed = 20
-    character(len=:), allocatable :: args(:), out, header, line
+    type(cli_t) :: cli
+    character(len=:), allocatable :: out, header, line
     character(len=300) :: msg
-    logical, allocatable :: used(:)
     logical :: single_hit, equal, contiguous
     type(scene_t) :: scene
     type(run_t) :: run
@@ -26,15 +26,15 @@ program c12_b2
     integer(8), allocatable :: seen(:)
     real(qp) :: e, diff, max_diff, single, max_single, e_single_min, v_plain
 
-    call start_program(name, usage, args, used)
-    call scene_from_args(args, scene, used, stat, msg)
-    call stop_unless_normal(stat, msg)
-    call take_out(args, used, out)
-    n_grid = 1001
-    call int_key(args, used, "n_grid", n_grid, 2, huge(1), stat, msg)
-    call stop_unless_normal(stat, msg)
-    call unused_arg(args, used, "out, n_grid and the scene keys (see --help)", stat, msg)
-    call stop_unless_normal(stat, msg)
+    call start_program(cli, "c12-b2", &
+        "C12 task b2: final velocities v_i(e) from e = 1 down to 0, each compared"//nl// &
+        "with the polynomial in e of its own collision sequence."//nl// &
+        "Writes OUT/b2_velocities.tsv, b2_closed_forms.tsv, b2_answers.tsv.")
+    call cli%add_int("n_grid", "1001", "points of the grid of e in [0, 1]", lo=2)
+    call add_scene_keys(cli, e_set_by="the grid of e")
+    call read_keys(cli, scene)
+    out = cli%get_word("out")
+    n_grid = cli%get_int("n_grid")
 
     p = scene%p
     equal = all(scene%m == scene%m(1))
@@ -146,17 +146,5 @@ contains
                 str(e_first)//tab//itoa(q)//tab//cs
         end do
     end subroutine list_forms
-
-
-    subroutine usage()
-        print "(a)", "usage: "//name//" [key=value ...]", "", &
-            "C12 task b2: final velocities v_i(e) from e = 1 down to 0, each compared", &
-            "with the polynomial in e of its own collision sequence.", &
-            "Writes OUT/b2_velocities.tsv, b2_closed_forms.tsv, b2_answers.tsv.", "", &
-            "  out=results         output directory", &
-            "  n_grid=1001         points of the grid of e in [0, 1], >= 2", &
-            scene_help(), &
-            "  (the scene key e is ignored: the grid sets it)"
-    end subroutine usage
 
 end program c12_b2

@@ -7,35 +7,28 @@ program c12_bench
         int64
     use sphere_row, only: qp, dp, scene_t, scene_init, status_normal
     use sphere_row_kind_engines, only: built_kinds, kind_info_t, kind_engine_t, new_kind_engine
-    use sphere_row_args, only: take_key, parse_real, unused_arg
     use sphere_row_output, only: open_table, tab, itoa, split_tabs, cpu_model
     use sphere_row_monte_carlo, only: normal_sampler_t, mc_counts_t, monte_carlo_v4
-    use sphere_row_study_cli, only: start_program, take_out, fail, stop_unless_normal
+    use sphere_row_study_cli, only: cli_t, start_program, read_keys, fail, stop_unless_normal
     implicit none
-    character(len=*), parameter :: name = "c12-bench"
+    character(len=*), parameter :: nl = new_line("a")
     character(len=*), parameter :: tasks(7) = [character(len=7) :: "a1", "a2", "b1", &
         "b2", "c1", "c2", "methods"]
-    character(len=:), allocatable :: args(:), text, out
+    type(cli_t) :: cli
+    character(len=:), allocatable :: out
     character(len=300) :: msg
-    logical, allocatable :: used(:)
-    logical :: found
     real(qp) :: seconds, e_values(3) = [0.2_qp, 0.5_qp, 0.18_qp]
     real :: min_seconds
     integer :: stat, unit, i, k
 
-    call start_program(name, usage, args, used)
-    call take_out(args, used, out)
-    min_seconds = 0.1
-    call take_key(args, used, "min_seconds", text, found)
-    if (found) then
-        call parse_real("min_seconds", text, seconds, stat, msg)
-        call stop_unless_normal(stat, msg)
-        if (.not. (seconds > 0 .and. seconds < 100)) &
-            call fail("min_seconds = "//text//": allowed 0 < min_seconds < 100")
-        min_seconds = real(seconds)
-    end if
-    call unused_arg(args, used, "out, min_seconds", stat, msg)
-    call stop_unless_normal(stat, msg)
+    call start_program(cli, "c12-bench", &
+        "Times the engine in each precision kind (ns per collision) and collects"//nl// &
+        "the wall time of each study program from OUT/timing/; writes OUT/bench.tsv.")
+    call cli%add_real("min_seconds", "0.1", "seconds of repeated runs per timing", &
+        lo=0.0_qp, hi=100.0_qp, lo_open=.true., hi_open=.true.)
+    call read_keys(cli)
+    out = cli%get_word("out")
+    min_seconds = real(cli%get_real("min_seconds"))
 
     call open_table(out, "bench.tsv", "quantity"//tab//"value"//tab//"unit"//tab//"note", &
         unit, stat, msg)
@@ -60,12 +53,6 @@ program c12_bench
     close (unit)
 
 contains
-
-    subroutine usage()
-        print "(a)", "usage: "//name//" [out=results] [min_seconds=0.1]", &
-            "Times the engine in each precision kind (ns per collision) and collects", &
-            "the wall time of each study program from OUT/timing/; writes OUT/bench.tsv."
-    end subroutine usage
 
     !> Nanoseconds per collision of the definition's scene at e in one kind,
     !> over at least min_seconds of repeated runs (one core).

@@ -3,14 +3,14 @@
 program c12_c1
     use, intrinsic :: iso_fortran_env, only: error_unit
     use sphere_row, only: qp, scene_t, run_t, event_log_t, simulate, str, status_normal
-    use sphere_row_args, only: scene_from_args, real_key, int_key, unused_arg, &
-        scene_help
     use sphere_row_output, only: open_table, write_answer, answer_header, tab, itoa
     use sphere_row_analysis, only: sequence_of, sequence_text
     use sphere_row_secant, only: secant, secant_result_t, secant_word, secant_converged
-    use sphere_row_study_cli, only: start_program, take_out, fail, stop_unless_normal
+    use sphere_row_study_cli, only: cli_t, add_scene_keys, start_program, read_keys, fail, &
+        stop_unless_normal
     implicit none
     character(len=*), parameter :: name = "c12-c1"
+    character(len=*), parameter :: nl = new_line("a")
     !> Starting pairs of the robustness table: good ones around the root, and
     !> bad ones in the flat quasi-plastic range, astride the kink at the single-
     !> hit boundary, at the ends of [0, 1].
@@ -18,9 +18,9 @@ program c12_c1
         0.5_qp, 0.6_qp, 0.9_qp, 1.0_qp, 0.3_qp, 0.35_qp, 0.0_qp, 1.0_qp, &
         0.05_qp, 0.1_qp, 0.1_qp, 0.15_qp, 0.2_qp, 0.25_qp, 0.16_qp, 0.9_qp, &
         0.17_qp, 0.2_qp], [2, 9])
-    character(len=:), allocatable :: args(:), out
+    type(cli_t) :: cli
+    character(len=:), allocatable :: out
     character(len=300) :: msg
-    logical, allocatable :: used(:)
     type(scene_t) :: scene
     type(run_t) :: run
     type(event_log_t) :: events
@@ -29,29 +29,27 @@ program c12_c1
     real(qp) :: target, x0, x1, f_tol, closed
     integer :: stat, unit, k, max_iterations
 
-    call start_program(name, usage, args, used)
-    call scene_from_args(args, scene, used, stat, msg)
-    call stop_unless_normal(stat, msg)
-    call take_out(args, used, out)
-    target = 0.5_qp
-    call real_key(args, used, "target", target, 0.0_qp, 1.0_qp, stat, msg)
-    call stop_unless_normal(stat, msg)
-    x0 = 0.5_qp
-    call real_key(args, used, "x0", x0, 0.0_qp, 1.0_qp, stat, msg)
-    call stop_unless_normal(stat, msg)
-    x1 = 0.6_qp
-    call real_key(args, used, "x1", x1, 0.0_qp, 1.0_qp, stat, msg)
-    call stop_unless_normal(stat, msg)
-    if (x0 == x1) call fail("x1 = "//str(x1)//": allowed x1 /= x0")
-    f_tol = 1.0e-30_qp
-    call real_key(args, used, "f_tol", f_tol, 1.0e-33_qp, 1.0_qp, stat, msg, "1e-33 <= f_tol <= 1")
-    call stop_unless_normal(stat, msg)
-    max_iterations = 50
-    call int_key(args, used, "max_iterations", max_iterations, 1, huge(1), stat, msg)
-    call stop_unless_normal(stat, msg)
-    call unused_arg(args, used, "out, target, x0, x1, f_tol, max_iterations and the "// &
-        "scene keys (see --help)", stat, msg)
-    call stop_unless_normal(stat, msg)
+    call start_program(cli, name, &
+        "C12 task c1: secant iteration in real(16) for the e at which the final"//nl// &
+        "velocity of the last sphere is target*v0; also a table of what the secant"//nl// &
+        "does from good and from bad starting values."//nl// &
+        "Writes OUT/c1_iterations.tsv, c1_starts.tsv, c1_answers.tsv.")
+    call cli%add_real("target", "0.5", "wanted v_p/v0", lo=0.0_qp, hi=1.0_qp)
+    call cli%add_real("x0", "0.5", "first starting value of e", lo=0.0_qp, hi=1.0_qp)
+    call cli%add_real("x1", "0.6", "second starting value of e, not x0", lo=0.0_qp, hi=1.0_qp)
+    call cli%add_real("f_tol", "1e-30", "stop when |v_p - target v0| <= f_tol v0", &
+        lo=1.0e-33_qp, hi=1.0_qp)
+    call cli%add_int("max_iterations", "50", "secant steps at most", lo=1)
+    call add_scene_keys(cli, e_set_by="the secant")
+    call read_keys(cli, scene)
+    out = cli%get_word("out")
+    target = cli%get_real("target")
+    x0 = cli%get_real("x0")
+    x1 = cli%get_real("x1")
+    if (x0 == x1) call fail("x1 = "//cli%get_text("x1")//": allowed x1 /= x0 = " &
+        //cli%get_text("x0"))
+    f_tol = cli%get_real("f_tol")
+    max_iterations = cli%get_int("max_iterations")
 
     call solve(x0, x1, main_result)
     call open_table(out, "c1_iterations.tsv", "k"//tab//"e_k"//tab//"residual=v4-target[V]", &
@@ -122,21 +120,5 @@ contains
         call secant(residual, a, b, 0.0_qp, 1.0_qp, f_tol*scene%v0, &
             64*epsilon(1.0_qp), max_iterations, result)
     end subroutine solve
-
-
-    subroutine usage()
-        print "(a)", "usage: "//name//" [key=value ...]", "", &
-            "C12 task c1: secant iteration in real(16) for the e at which the final", &
-            "velocity of the last sphere is target*v0; also a table of what the secant", &
-            "does from good and from bad starting values.", &
-            "Writes OUT/c1_iterations.tsv, c1_starts.tsv, c1_answers.tsv.", "", &
-            "  out=results         output directory", &
-            "  target=0.5          wanted v_p/v0, 0 <= target <= 1", &
-            "  x0=0.5 x1=0.6       starting values of e, in [0, 1], different", &
-            "  f_tol=1e-30         stop when |v_p - target v0| <= f_tol v0 (>= 1e-33)", &
-            "  max_iterations=50   secant steps at most, >= 1", &
-            scene_help(), &
-            "  (the scene key e is ignored: the secant sets it)"
-    end subroutine usage
 
 end program c12_c1

@@ -13,20 +13,18 @@
 program c12_c2
     use, intrinsic :: iso_fortran_env, only: output_unit, int64
     use sphere_row, only: dp, qp, scene_t, run_t, simulate, str, real_str, status_normal
-    use sphere_row_args, only: scene_from_args, split_key_value, parse_real, parse_int, &
-        unused_arg, scene_help
     use sphere_row_output, only: itoa
     use sphere_row_monte_carlo, only: normal_sampler_t, mc_counts_t, monte_carlo_v4, &
         normal_mass_outside_unit, normal_cdf, normal_density, sample_moments, normal_quantile, &
         mean_ci_half_width, sort_values, sorted_quantile, ks_distance, cubic_law_applies, &
         cubic_law_mean, cubic_law_sd, cubic_law_quantile, cubic_law_cdf, cubic_law_density, &
         cubic_law_v4, single_impact_bound, min_acceptance
-    use sphere_row_study_cli, only: start_program, fail, stop_unless_normal
+    use sphere_row_study_cli, only: cli_t, add_scene_keys, start_program, read_keys, fail, &
+        stop_unless_normal
     implicit none
 
     character(len=*), parameter :: name = "c12-c2"
-    character(len=*), parameter :: all_keys = "n, nmax, seed, mean, sd, bins, out, " &
-        //"p, d, a, gaps, v0, masses, tol, max_collisions"
+    character(len=*), parameter :: nl = new_line("a")
     character(len=1), parameter :: tab = achar(9)
     !> Sample sizes: at least 100 for the normal-quantile interval (see
     !> mean_ci_half_width); at most 10^8, about 3 GB of work arrays.
@@ -44,10 +42,10 @@ program c12_c2
     !> e = 0.2 it is struck three times, at e = 1 (elastic) once.
     real(qp), parameter :: bracket_lo = 0.2_qp, bracket_hi = 1.0_qp
 
-    character(len=:), allocatable :: args(:), key, value, out, mean_text, sd_text
+    type(cli_t) :: cli
+    character(len=:), allocatable :: out
     character(len=300) :: msg
-    logical, allocatable :: used(:)
-    logical :: nmax_given, exact
+    logical :: exact
     type(scene_t) :: scene
     type(normal_sampler_t) :: sampler
     type(mc_counts_t) :: counts, counts_rest
@@ -64,57 +62,16 @@ program c12_c2
     real(qp) :: bound, max_diff, redraws_expected, outside_expected
     integer :: outside, reruns, mismatches
 
-    call start_program(name, usage, args, used)
-    do i = 1, size(args)
-        if (index(args(i), "=") == 0) cycle
-        call split_key_value(args(i), key, value, stat, msg)
-        if (stat == status_normal .and. key == "e") call fail("e = "//value &
-            //": not a key of "//name//", which samples e; allowed keys are "//all_keys)
-    end do
-    call scene_from_args(args, scene, used, stat, msg)
-    call stop_unless_normal(stat, msg)
-
-    n = 1000000
+    call define_keys()
+    call read_keys(cli, scene)
+    out = cli%get_word("out")
+    n = cli%get_int("n")
     nmax = n
-    nmax_given = .false.
-    seed = 12
-    mean = 0.5_qp
-    mean_text = "0.5"
-    sd = 0.05_qp
-    sd_text = "0.05"
-    bins = 100
-    out = "results"
-    do i = 1, size(args)
-        if (used(i) .or. index(args(i), "=") == 0) cycle
-        call split_key_value(args(i), key, value, stat, msg)
-        call stop_unless_normal(stat, msg)
-        used(i) = .true.
-        select case (key)
-        case ("n")
-            call parse_int(key, value, n, stat, msg)
-        case ("nmax")
-            call parse_int(key, value, nmax, stat, msg)
-            nmax_given = .true.
-        case ("seed")
-            call parse_int(key, value, seed, stat, msg)
-        case ("mean")
-            call parse_real(key, value, mean, stat, msg)
-            mean_text = value
-        case ("sd")
-            call parse_real(key, value, sd, stat, msg)
-            sd_text = value
-        case ("bins")
-            call parse_int(key, value, bins, stat, msg)
-        case ("out")
-            out = value
-        case default
-            used(i) = .false.
-        end select
-        call stop_unless_normal(stat, msg)
-    end do
-    call unused_arg(args, used, all_keys, stat, msg)
-    call stop_unless_normal(stat, msg)
-    if (.not. nmax_given) nmax = n
+    if (cli%given("nmax")) nmax = cli%get_int("nmax")
+    seed = cli%get_int("seed")
+    mean = cli%get_real("mean")
+    sd = cli%get_real("sd")
+    bins = cli%get_int("bins")
     call check_settings()
 
     ! the stream: first the main sample, then its continuation up to nmax
@@ -157,33 +114,32 @@ program c12_c2
 contains
 
     !> Refuse settings outside their ranges before any work is done.
+    !> The keys of c2: the sample, the law of e, the histogram, and the scene
+    !> keys but e, which is sampled.
+    subroutine define_keys()
+        call start_program(cli, name, &
+            "Task c2 of ARGESIM Comparison 12: e ~ N(mean, sd^2), drawn by Box-Muller"//nl// &
+            "from GSL's MT19937 and truncated to 0 <= e <= 1 (draws outside are drawn"//nl// &
+            "again and counted); each row is run in real(16). Writes c2_answers.tsv,"//nl// &
+            "c2_ecdf.tsv, c2_histogram.tsv and c2_convergence.tsv into the directory out.")
+        call cli%add_int("n", "1000000", "main sample size", lo=n_least, hi=n_most)
+        call cli%add_int("nmax", "", "largest N of the convergence table (rows 10^2, 10^3," &
+            //" ..., n, nmax; one stream), at least n", lo=n_least, hi=n_most, shown="n")
+        call cli%add_int("seed", "12", "MT19937 seed", lo=1)
+        call cli%add_real("mean", "0.5", "mean of e; at least 10 % of the law in [0, 1]")
+        call cli%add_real("sd", "0.05", "standard deviation of e", lo=0.0_qp, lo_open=.true.)
+        call cli%add_int("bins", "100", "histogram bins", lo=1, hi=bins_most)
+        call add_scene_keys(cli, e_set_by="the normal law of e")
+    end subroutine define_keys
+
+    !> What the keys' own ranges cannot say: nmax >= n, and enough of the law
+    !> of e inside [0, 1] for the truncation to draw again rarely.
     subroutine check_settings()
-        character(len=32) :: text, text_n
-        if (n < n_least .or. n > n_most) then
-            write (text, "(i0)") n
-            call fail("n = "//trim(text)//": allowed an integer 100 <= n <= 100000000")
-        end if
-        if (nmax < n .or. nmax > n_most) then
-            write (text, "(i0)") nmax
-            write (text_n, "(i0)") n
-            call fail("nmax = "//trim(text)//": allowed an integer n <= nmax <= 100000000" &
-                //" (n = "//trim(text_n)//")")
-        end if
-        if (seed < 1) then
-            write (text, "(i0)") seed
-            call fail("seed = "//trim(text)//": allowed an integer >= 1")
-        end if
-        if (bins < 1 .or. bins > bins_most) then
-            write (text, "(i0)") bins
-            call fail("bins = "//trim(text)//": allowed an integer 1 <= bins <= 100000")
-        end if
-        if (len(out) == 0 .or. index(out, "'") > 0) then
-            call fail("out = '"//out//"': allowed a directory path without single quotes")
-        end if
-        if (.not. (sd > 0.0_qp)) call fail("sd = "//sd_text//": allowed sd > 0")
+        if (nmax < n) call fail("nmax = "//cli%get_text("nmax")//": allowed an integer " &
+            //"n <= nmax <= "//itoa(n_most)//" (n = "//itoa(n)//")")
         if (.not. (1.0_dp - normal_mass_outside_unit(mean, sd) >= min_acceptance)) then
-            call fail("mean = "//mean_text//", sd = "//sd_text//": under 10 % of the normal" &
-                //" law lies in 0 <= e <= 1; allowed at least 10 %")
+            call fail("mean = "//cli%get_text("mean")//", sd = "//cli%get_text("sd") &
+                //": under 10 % of the normal law lies in 0 <= e <= 1; allowed at least 10 %")
         end if
     end subroutine check_settings
 
@@ -491,44 +447,6 @@ contains
             sizes(k + 1) = t
         end do
     end subroutine sort_sizes
-
-
-    subroutine usage()
-        write (output_unit, "(a)") &
-            "usage: "//name//" [FILE] [key=value ...]", &
-            "", &
-            "Task c2 of ARGESIM Comparison 12: e ~ N(mean, sd^2), drawn by Box-Muller from", &
-            "GSL's MT19937 and truncated to 0 <= e <= 1 (draws outside are drawn again and", &
-            "counted); each row is run in real(16). Writes c2_answers.tsv, c2_ecdf.tsv,", &
-            "c2_histogram.tsv and c2_convergence.tsv into the directory out. Keys and", &
-            "defaults:", &
-            "", &
-            "  n=1000000           main sample size, integer 100 <= n <= 100000000", &
-            "  nmax=n              largest N of the convergence table (rows 10^2, 10^3, ...,", &
-            "                      n, nmax; one stream), integer n <= nmax <= 100000000", &
-            "  seed=12             MT19937 seed, integer >= 1", &
-            "  mean=0.5            mean of e, finite; at least 10 % of the law in [0, 1]", &
-            "  sd=0.05             standard deviation of e, > 0", &
-            "  bins=100            histogram bins, integer 1 <= bins <= 100000", &
-            "  out=results         output directory (created if missing)", &
-            "", &
-            "Scene keys (e is sampled, so the key e is refused):", &
-            scene_keys_but_e(), &
-            "", &
-            "Bad input: one line on stderr naming the key, exit status 2, nothing written."
-    end subroutine usage
-
-    !> The usage lines of the scene keys without the line of e.
-    pure function scene_keys_but_e() result(text)
-        character(len=:), allocatable :: text
-        integer :: first, last
-        text = scene_help()
-        first = index(text, "  e=")
-        if (first == 0) return
-        last = first + index(text(first:), new_line("a")) - 1
-        if (last < first) return
-        text = text(:first - 1)//text(last + 1:)
-    end function scene_keys_but_e
 
     !> A double with 17 significant digits, enough to give back its bits.
     pure function dstr(x) result(s)

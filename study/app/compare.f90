@@ -12,25 +12,24 @@
 program tsv_compare
     use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
     use sphere_row, only: qp
-    use sphere_row_args, only: take_key, unused_arg
     use sphere_row_output, only: itoa, split_tabs
-    use sphere_row_study_cli, only: start_program, fail, stop_unless_normal
+    use sphere_row_study_cli, only: cli_t, start_program, read_keys, fail
     implicit none
     character(len=*), parameter :: name = "tsv-compare"
-    character(len=:), allocatable :: args(:), committed, fresh, listing
-    character(len=300) :: msg
+    type(cli_t) :: cli
+    character(len=:), allocatable :: committed, fresh, listing
     character(len=4000) :: file
-    logical, allocatable :: used(:)
-    logical :: found
     integer :: stat, unit, ios, n_files, n_values, n_bad
 
-    call start_program(name, usage, args, used)
-    call take_key(args, used, "committed", committed, found)
-    if (.not. found) call fail("committed: missing: allowed committed=DIR")
-    call take_key(args, used, "fresh", fresh, found)
-    if (.not. found) call fail("fresh: missing: allowed fresh=DIR")
-    call unused_arg(args, used, "committed, fresh", stat, msg)
-    call stop_unless_normal(stat, msg)
+    call start_program(cli, name, "Compares every *.tsv of DIR fresh with the same file in " &
+        //"DIR committed.", tables=.false.)
+    call cli%add_word("committed", "", "directory of the committed tables (required)")
+    call cli%add_word("fresh", "", "directory of the regenerated tables (required)")
+    call read_keys(cli)
+    if (.not. cli%given("committed")) call fail("committed: missing: allowed committed=DIR")
+    if (.not. cli%given("fresh")) call fail("fresh: missing: allowed fresh=DIR")
+    committed = cli%get_word("committed")
+    fresh = cli%get_word("fresh")
 
     listing = "build/tsv-compare.list"
     call execute_command_line("mkdir -p build && ls -1 '"//fresh//"' | grep '\.tsv$' > " &
@@ -58,11 +57,6 @@ program tsv_compare
         " numbers agree with "//committed
 
 contains
-
-    subroutine usage()
-        print "(a)", "usage: "//name//" committed=DIR fresh=DIR", &
-            "Compares every *.tsv of DIR fresh with the same file in DIR committed."
-    end subroutine usage
 
     !> Compare one table; report each differing field on stderr.
     subroutine compare_file(base)

@@ -7,7 +7,6 @@ program c12_methods
         compiler_version, compiler_options
     use sphere_row, only: dp, qp, scene_t, scene_init, status_normal, &
         status_word, str
-    use sphere_row_args, only: split_key_value, parse_int, parse_real
     use sphere_row_output, only: itoa, cpu_model
     use sphere_row_outcome, only: outcome_t, comparison_t, compare_outcomes, classify, &
         category_word
@@ -16,12 +15,12 @@ program c12_methods
         method_engine, method_absolute, method_ode, method_stepping, stepper_rk8pd, &
         stepper_rkf45
     use sphere_row_kind_engines, only: built_kinds, kind_info, kind_info_t
-    use sphere_row_study_cli, only: start_program, fail, stop_unless_normal
+    use sphere_row_study_cli, only: cli_t, start_program, read_keys, fail, stop_unless_normal
     use sphere_row_sorting, only: median
     implicit none
 
     character(len=*), parameter :: name = "c12-methods"
-    character(len=*), parameter :: all_keys = "out, repeats, min_time, points, max_steps"
+    character(len=*), parameter :: nl = new_line("a")
     character(len=*), parameter :: tab = achar(9)
     !> The critical restitution of the definition's scene, 3 - 2 sqrt(2).
     real(qp), parameter :: e_crit = 3.0_qp - 2.0_qp*sqrt(2.0_qp)
@@ -33,55 +32,26 @@ program c12_methods
     !> Bisection steps refining that distance within a decade (in log10).
     integer, parameter :: refine_steps = 12
 
-    character(len=:), allocatable :: args(:), key, value, out_dir
-    logical, allocatable :: used(:)
+    type(cli_t) :: cli
+    character(len=:), allocatable :: out_dir
     character(len=300) :: msg
     type(method_t), allocatable :: methods(:)
     logical, allocatable :: in_map(:)
     real(qp), allocatable :: scenes(:)
     logical, allocatable :: in_costs(:)
-    integer :: repeats, points, stat, i, steps_in
+    integer :: repeats, points, stat
     integer(int64) :: max_steps
     real(qp) :: min_time
     real :: clock_start, clock_end
 
     call cpu_time(clock_start)
-    call start_program(name, usage, args, used)
-    out_dir = "results"
-    repeats = 5
-    min_time = 0.05_qp
-    points = 300
-    max_steps = 20000000_int64
-    do i = 1, size(args)
-        call split_key_value(args(i), key, value, stat, msg)
-        call stop_unless_normal(stat, msg)
-        select case (key)
-        case ("out")
-            if (len(value) == 0 .or. scan(value, "'""") > 0) &
-                call fail("out = '"//value//"': allowed a directory name without quotes")
-            out_dir = value
-        case ("repeats")
-            call parse_int(key, value, repeats, stat, msg)
-            if (stat == status_normal .and. (repeats < 1 .or. repeats > 1000)) &
-                call fail("repeats = "//value//": allowed 1 <= repeats <= 1000")
-        case ("points")
-            call parse_int(key, value, points, stat, msg)
-            if (stat == status_normal .and. (points < 8 .or. points > 100000)) &
-                call fail("points = "//value//": allowed 8 <= points <= 100000")
-        case ("min_time")
-            call parse_real(key, value, min_time, stat, msg)
-            if (stat == status_normal .and. .not. (min_time >= 0.0_qp .and. min_time <= 60.0_qp)) &
-                call fail("min_time = "//value//": allowed 0 <= min_time <= 60 (seconds)")
-        case ("max_steps")
-            call parse_int(key, value, steps_in, stat, msg)
-            if (stat == status_normal .and. steps_in < 1) &
-                call fail("max_steps = "//value//": allowed an integer >= 1")
-            max_steps = steps_in
-        case default
-            call fail("unknown key '"//key//"': allowed keys are "//all_keys)
-        end select
-        call stop_unless_normal(stat, msg)
-    end do
+    call define_keys()
+    call read_keys(cli)
+    out_dir = cli%get_word("out")
+    repeats = cli%get_int("repeats")
+    min_time = cli%get_real("min_time")
+    points = cli%get_int("points")
+    max_steps = cli%get_int("max_steps")
     call execute_command_line("mkdir -p '"//out_dir//"'", exitstat=stat)
     if (stat /= 0) call fail("out = "//out_dir//": the directory cannot be created")
 
@@ -101,6 +71,26 @@ program c12_methods
         clock_end - clock_start, " s of CPU time"
 
 contains
+
+    !> The keys of c12-methods: where the tables go and how long to time.
+    subroutine define_keys()
+        call start_program(cli, name, &
+            "Compares four methods on the definition's scene (p = 4, d = a = v0 = 1)"//nl// &
+            "against the reference engine (real128): the engine in each real kind built;"//nl// &
+            "absolute variables in dp, qp; GSL ODE integration (rk8pd, rkf45) with state"//nl// &
+            "events; fixed time steps. Writes into the directory `out`:"//nl// &
+            "  methods_work_precision.tsv  CPU time and errors per scene, method, setting"//nl// &
+            "  methods_stability.tsv       outcome category over e from 1 to 0"//nl// &
+            "  methods_min_distance.tsv    smallest e - e_c with the right count, per kind"//nl// &
+            "  methods_costs.tsv           ns per run and per collision at e = 0.2, 0.172"//nl// &
+            "  methods_platform.tsv        CPU model, compiler version and options")
+        call cli%add_int("repeats", "5", "timing batches per measurement (median taken)", &
+            lo=1, hi=1000)
+        call cli%add_real("min_time", "0.05", "CPU seconds per measurement", lo=0.0_qp, &
+            hi=60.0_qp)
+        call cli%add_int("points", "300", "values of e on the stability map", lo=8, hi=100000)
+        call cli%add_int("max_steps", "20000000", "step budget of time stepping", lo=1)
+    end subroutine define_keys
 
     !> The methods and settings compared; in_map marks those on the stability
     !> map. Every other ODE tolerance is left out there (below e_c an ODE run
@@ -430,30 +420,6 @@ contains
         call method_prepare(method, scene, code, text)
         if (code /= status_normal) call fail(text)
     end subroutine prepare
-
-
-    subroutine usage()
-        write (output_unit, "(a)") &
-            "usage: "//name//" [key=value ...]", &
-            "", &
-            "Compares four methods on the definition's scene (p = 4, d = a = v0 = 1) against", &
-            "the reference engine (real128): the engine in each real kind built; absolute", &
-            "variables in dp, qp; GSL ODE integration (rk8pd, rkf45) with state events; fixed", &
-            "time steps. Writes into the directory `out`:", &
-            "  methods_work_precision.tsv  CPU time and errors per scene, method, setting", &
-            "  methods_stability.tsv       outcome category over e from 1 to 0", &
-            "  methods_min_distance.tsv    smallest e - e_c with the right count, per precision", &
-            "  methods_costs.tsv           ns per run and per collision at e = 0.2 and 0.172", &
-            "  methods_platform.tsv        CPU model, compiler version and options", &
-            "Keys and defaults:", &
-            "  out=results          output directory (created if missing)", &
-            "  repeats=5            timing batches per measurement (median taken), 1..1000", &
-            "  min_time=0.05        CPU seconds per measurement, 0..60", &
-            "  points=300           values of e on the stability map, 8..100000", &
-            "  max_steps=20000000   step budget of time stepping, >= 1", &
-            "", &
-            "Bad input: one line on stderr naming the key, exit status 2."
-    end subroutine usage
 
     pure function yes_no(flag) result(word)
         logical, intent(in) :: flag

@@ -2,21 +2,21 @@
 !> (every answer with its cross-check, how it was obtained, the figures), made
 !> from the per-task answer tables.
 program c12_summary
-    use sphere_row_args, only: unused_arg
     use sphere_row_output, only: open_table, tab, split_tabs
-    use sphere_row_study_cli, only: start_program, take_out, fail, stop_unless_normal
+    use sphere_row_study_cli, only: cli_t, start_program, read_keys, fail, stop_unless_normal
     implicit none
-    character(len=*), parameter :: name = "c12-summary"
+    character(len=*), parameter :: nl = new_line("a")
     character(len=*), parameter :: tasks(6) = ["a1", "a2", "b1", "b2", "c1", "c2"]
-    character(len=:), allocatable :: args(:), out
+    type(cli_t) :: cli
+    character(len=:), allocatable :: out
     character(len=300) :: msg
-    logical, allocatable :: used(:)
     integer :: stat, answers, md, i
 
-    call start_program(name, usage, args, used)
-    call take_out(args, used, out)
-    call unused_arg(args, used, "out", stat, msg)
-    call stop_unless_normal(stat, msg)
+    call start_program(cli, "c12-summary", &
+        "Reads OUT/<task>_answers.tsv of tasks a1 a2 b1 b2 c1 c2 and writes"//nl// &
+        "OUT/answers.tsv and OUT/summary.md.")
+    call read_keys(cli)
+    out = cli%get_word("out")
     do i = 1, size(tasks)
         if (.not. exists(out//"/"//tasks(i)//"_answers.tsv")) &
             call fail("out = "//out//": "//tasks(i)//"_answers.tsv missing: run make study")
@@ -96,12 +96,6 @@ program c12_summary
     close (md)
 
 contains
-
-    subroutine usage()
-        print "(a)", "usage: "//name//" [out=results]", &
-            "Reads OUT/<task>_answers.tsv of tasks a1 a2 b1 b2 c1 c2 and writes", &
-            "OUT/answers.tsv and OUT/summary.md."
-    end subroutine usage
 
     !> A task's section: what was done and derived, its figures, and each
     !> answer with how it was obtained and checked.

@@ -1,68 +1,101 @@
-!> What every study program does with its command line: `--help`, the output
-!> directory, and one line on stderr with exit status 2 for bad input.
+!> What every study program does with its command line, on the key registry
+!> of `sphere_row_args`: the key `out`, `--help` generated from the keys, the
+!> scene of the scene keys, and one line on stderr with exit status 2 for bad
+!> input.
 !>
-!> Programs only: the library reports errors by status, a program decides to
-!> stop, and these are the procedures it stops with.
+!> A study program registers its keys between `start_program` and
+!> `read_keys`:
+!>
+!>     call start_program(cli, "c12-b2", "C12 task b2: ...")
+!>     call add_scene_keys(cli, set_by_program="the grid of e")
+!>     call cli%add_int("n_grid", "1001", "points of the grid of e in [0, 1]", lo=2)
+!>     call read_keys(cli, scene)
+!>     n_grid = cli%get_int("n_grid")
+!>
+!> Programs only: the library reports errors by status or `error_t`, a
+!> program decides to stop, and these are the procedures it stops with.
 module sphere_row_study_cli
-    use, intrinsic :: iso_fortran_env, only: error_unit
-    use sphere_row, only: status_normal
-    use sphere_row_args, only: get_args, take_key, wants_help
+    use sphere_row, only: scene_t, status_normal
+    use sphere_row_args, only: cli_t, read_command_line, scene_from_cli, add_scene_keys, &
+        fail_with => fail
+    use sphere_row_error, only: error_t, fatal_error
     implicit none
     private
-    public :: start_program, take_out, fail, stop_unless_normal
+    public :: cli_t, add_scene_keys, start_program, read_keys, fail, stop_unless_normal
 
     !> The running program's name, the prefix of its messages.
     character(len=:), allocatable :: program_name
+    !> True if the program writes tables, into the directory of key `out`.
+    logical :: writes_tables = .true.
 
-    abstract interface
-        !> Print the program's usage on stdout.
-        subroutine usage_proc()
-        end subroutine usage_proc
-    end interface
+    !> Stop with one line on stderr: from a text or from an `error_t`.
+    interface fail
+        module procedure fail_text
+        module procedure fail_error
+    end interface fail
 
 contains
 
-    !> Start program `name`: its arguments, none of them used yet; with
-    !> `--help` print `usage` and stop.
-    subroutine start_program(name, usage, args, used)
-        character(len=*), intent(in) :: name
-        procedure(usage_proc) :: usage
-        character(len=:), allocatable, intent(out) :: args(:)
-        logical, allocatable, intent(out) :: used(:)
+    !> Start the command line of program `name`: `about` is the paragraph of
+    !> its `--help` (lines separated by new_line), and the key `out` names the
+    !> directory of its tables unless `tables` is false.
+    subroutine start_program(cli, name, about, tables)
+        type(cli_t), intent(out) :: cli
+        character(len=*), intent(in) :: name, about
+        logical, intent(in), optional :: tables
         program_name = name
-        call get_args(args)
-        if (wants_help(args)) then
-            call usage()
-            stop
-        end if
-        allocate (used(size(args)), source=.false.)
+        cli%name = name
+        cli%about = about
+        writes_tables = .true.
+        if (present(tables)) writes_tables = tables
+        if (writes_tables) call cli%add_word("out", "results", &
+            "directory of the tables (made if missing)")
     end subroutine start_program
 
-    !> The output directory, key `out` (default `results`).
-    subroutine take_out(args, used, out)
-        character(len=*), intent(in) :: args(:)
-        logical, intent(inout) :: used(:)
-        character(len=:), allocatable, intent(out) :: out
-        character(len=:), allocatable :: text
-        logical :: found
-        out = "results"
-        call take_key(args, used, "out", text, found)
-        if (found) out = text
-    end subroutine take_out
+    !> Read the command line into the keys registered: `--help` prints the
+    !> usage made from them and stops, bad input fails. With `scene`, the
+    !> scene of the scene keys. The output directory must not be empty and
+    !> holds no quote, since it is handed to the shell to be made.
+    subroutine read_keys(cli, scene)
+        type(cli_t), intent(inout) :: cli
+        type(scene_t), intent(out), optional :: scene
+        type(error_t), allocatable :: error
+        character(len=:), allocatable :: out
+        if (cli%files) then
+            cli%synopsis = "[FILE] [key=value ...]"
+        else
+            cli%synopsis = "[key=value ...]"
+        end if
+        call read_command_line(cli)
+        if (writes_tables) then
+            out = cli%get_word("out")
+            if (scan(out, "'""") > 0) call fatal_error(error, "out = "//out &
+                //": allowed a directory name without quotes")
+        end if
+        if (.not. allocated(error) .and. present(scene)) call scene_from_cli(cli, scene, error)
+        if (allocated(error)) call fail_error(error)
+    end subroutine read_keys
 
     !> One line on stderr, `program: text`, and exit status 2.
-    subroutine fail(text)
+    subroutine fail_text(text)
         character(len=*), intent(in) :: text
+        type(error_t), allocatable :: error
+        call fatal_error(error, trim(text))
+        call fail_error(error)
+    end subroutine fail_text
+
+    !> One line on stderr, `program: message`, and exit status 2.
+    subroutine fail_error(error)
+        type(error_t), intent(in) :: error
         if (.not. allocated(program_name)) program_name = "c12"
-        write (error_unit, "(a)") program_name//": "//trim(text)
-        stop 2, quiet=.true.
-    end subroutine fail
+        call fail_with(program_name, error)
+    end subroutine fail_error
 
     !> fail(msg) unless `stat` is status_normal.
     subroutine stop_unless_normal(stat, msg)
         integer, intent(in) :: stat
         character(len=*), intent(in) :: msg
-        if (stat /= status_normal) call fail(msg)
+        if (stat /= status_normal) call fail_text(msg)
     end subroutine stop_unless_normal
 
 end module sphere_row_study_cli
