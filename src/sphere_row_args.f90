@@ -30,6 +30,7 @@ module sphere_row_args
     use, intrinsic :: iso_fortran_env, only: error_unit, output_unit, int64, iostat_end, &
         iostat_eor
     use sphere_row_kinds, only: qp
+    use sphere_row_format, only: itoa
     use sphere_row_status, only: status_normal
     use sphere_row_error, only: error_t, fatal_error, error_io
     use sphere_row, only: scene_t, scene_init
@@ -1300,14 +1301,6 @@ contains
             if (low(i:i) >= "A" .and. low(i:i) <= "Z") low(i:i) = achar(iachar(low(i:i)) + 32)
         end do
     end function lower
-
-    pure function itoa(i) result(s)
-        integer, intent(in) :: i
-        character(len=:), allocatable :: s
-        character(len=16) :: buf
-        write (buf, "(i0)") i
-        s = trim(buf)
-    end function itoa
 
     ! ------------------------------------------------------------------
     ! the scene keys

@@ -7,7 +7,7 @@
 !> `\e` alone for an empty argument. Files named `F/...` are written by
 !> write_scene_files into build/test_front/.
 module test_front
-    use sphere_row, only: qp, scene_t
+    use sphere_row, only: qp, scene_t, itoa
     use sphere_row_args, only: cli_t, string_t, add_scene_keys, scene_from_cli, read_real, &
         read_int, read_reals, is_real_text, is_int_text, printable, short_text
     use sphere_row_error, only: input_error_t => error_t
@@ -552,13 +552,5 @@ contains
             if (text(i:i) == new_line("a")) count_lines = count_lines + 1
         end do
     end function count_lines
-
-    pure function itoa(i) result(s)
-        integer, intent(in) :: i
-        character(len=:), allocatable :: s
-        character(len=16) :: buf
-        write (buf, "(i0)") i
-        s = trim(buf)
-    end function itoa
 
 end module test_front

@@ -5,8 +5,8 @@
 program c12_a1
     use sphere_row, only: qp, dp, scene_t, run_t, event_log_t, scene_dp_t, run_dp_t, &
         scene_init, simulate, gaps_at, str, status_word, status_normal, event_collision, &
-        event_collapse
-    use sphere_row_output, only: open_table, write_answer, answer_header, tab, itoa
+        event_collapse, itoa
+    use sphere_row_tables, only: open_table, write_answer, answer_header, tab
     use sphere_row_study_cli, only: cli_t, add_scene_keys, start_program, read_keys, fail, &
         stop_unless_normal
     implicit none

@@ -2,8 +2,8 @@
 !> quasi-plastic case, where the velocities are equal to within `spread_max`.
 program c12_a2
     use sphere_row, only: qp, scene_t, run_t, simulate, str, status_word, status_normal, &
-        status_collapsed
-    use sphere_row_output, only: open_table, write_answer, answer_header, tab, itoa
+        status_collapsed, itoa
+    use sphere_row_tables, only: open_table, write_answer, answer_header, tab
     use sphere_row_study_cli, only: cli_t, add_scene_keys, start_program, read_keys, fail, &
         stop_unless_normal
     implicit none

@@ -3,8 +3,8 @@
 !> constant collision sequence every final velocity is a polynomial in e.
 program c12_b2
     use sphere_row, only: qp, scene_t, run_t, event_log_t, simulate, str, status_word, &
-        status_normal
-    use sphere_row_output, only: open_table, write_answer, answer_header, tab, itoa
+        status_normal, itoa
+    use sphere_row_tables, only: open_table, write_answer, answer_header, tab
     use sphere_row_analysis, only: sequence_of, sequence_text, sequence_hash, &
         sequence_polynomials, poly_eval
     use sphere_row_study_cli, only: cli_t, add_scene_keys, start_program, read_keys, &

@@ -5,9 +5,9 @@
 program c12_bench
     use, intrinsic :: iso_fortran_env, only: compiler_version, compiler_options, &
         int64
-    use sphere_row, only: qp, dp, scene_t, scene_init, status_normal
+    use sphere_row, only: qp, dp, scene_t, scene_init, status_normal, itoa
     use sphere_row_kind_engines, only: built_kinds, kind_info_t, kind_engine_t, new_kind_engine
-    use sphere_row_output, only: open_table, tab, itoa, split_tabs, cpu_model
+    use sphere_row_tables, only: open_table, tab, split_tabs, cpu_model
     use sphere_row_monte_carlo, only: normal_sampler_t, mc_counts_t, monte_carlo_v4
     use sphere_row_study_cli, only: cli_t, start_program, read_keys, fail, stop_unless_normal
     implicit none

@@ -2,8 +2,9 @@
 !> iteration in real(16), from good and from bad starting values.
 program c12_c1
     use, intrinsic :: iso_fortran_env, only: error_unit
-    use sphere_row, only: qp, scene_t, run_t, event_log_t, simulate, str, status_normal
-    use sphere_row_output, only: open_table, write_answer, answer_header, tab, itoa
+    use sphere_row, only: qp, scene_t, run_t, event_log_t, simulate, str, status_normal, &
+        itoa
+    use sphere_row_tables, only: open_table, write_answer, answer_header, tab
     use sphere_row_analysis, only: sequence_of, sequence_text
     use sphere_row_secant, only: secant, secant_result_t, secant_word, secant_converged
     use sphere_row_study_cli, only: cli_t, add_scene_keys, start_program, read_keys, fail, &

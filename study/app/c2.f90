@@ -12,8 +12,8 @@
 !> of that region is found with the engine and the samples below it counted.
 program c12_c2
     use, intrinsic :: iso_fortran_env, only: output_unit, int64
-    use sphere_row, only: dp, qp, scene_t, run_t, simulate, str, real_str, status_normal
-    use sphere_row_output, only: itoa
+    use sphere_row, only: dp, qp, scene_t, run_t, simulate, str, real_str, status_normal, &
+        itoa
     use sphere_row_monte_carlo, only: normal_sampler_t, mc_counts_t, monte_carlo_v4, &
         normal_mass_outside_unit, normal_cdf, normal_density, sample_moments, normal_quantile, &
         mean_ci_half_width, sort_values, sorted_quantile, ks_distance, cubic_law_applies, &

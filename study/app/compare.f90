@@ -11,8 +11,8 @@
 !> skipped: they are measurements.
 program tsv_compare
     use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
-    use sphere_row, only: qp
-    use sphere_row_output, only: itoa, split_tabs
+    use sphere_row, only: qp, itoa
+    use sphere_row_tables, only: split_tabs
     use sphere_row_study_cli, only: cli_t, start_program, read_keys, fail
     implicit none
     character(len=*), parameter :: name = "tsv-compare"

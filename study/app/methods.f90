@@ -5,9 +5,8 @@
 program c12_methods
     use, intrinsic :: iso_fortran_env, only: output_unit, int64, &
         compiler_version, compiler_options
-    use sphere_row, only: dp, qp, scene_t, scene_init, status_normal, &
-        status_word, str
-    use sphere_row_output, only: itoa, cpu_model
+    use sphere_row, only: dp, qp, scene_t, scene_init, status_normal, status_word, str, itoa
+    use sphere_row_tables, only: cpu_model
     use sphere_row_outcome, only: outcome_t, comparison_t, compare_outcomes, classify, &
         category_word
     use sphere_row_methods, only: method_t, new_method, reference_method, method_prepare, &

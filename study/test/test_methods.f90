@@ -4,7 +4,7 @@
 module test_methods
     use, intrinsic :: iso_fortran_env, only: int64
     use sphere_row, only: sp, dp, qp, scene_t, scene_dp_t, scene_init, str, &
-        status_normal, status_collapsed, status_max_collisions, status_invalid
+        status_normal, status_collapsed, status_max_collisions, status_invalid, itoa
     use sphere_row_outcome, only: outcome_t, comparison_t, compare_outcomes, classify, &
         category_right, category_wrong_count, category_wrong_state, category_no_end, &
         category_negative_gap, outcome_start, outcome_add
@@ -383,13 +383,5 @@ contains
         call check(error, run%status == status_invalid, "ode with tol = 2 accepted")
         call check(error, run%status /= status_solver_failed, "ode tol = 2 reached GSL")
     end subroutine test_invalid_settings
-
-    pure function itoa(i) result(s)
-        integer, intent(in) :: i
-        character(len=:), allocatable :: s
-        character(len=16) :: buf
-        write (buf, "(i0)") i
-        s = trim(buf)
-    end function itoa
 
 end module test_methods

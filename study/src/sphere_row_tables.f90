@@ -1,11 +1,10 @@
 !> Output of the study programs: TSV tables with one header row, and the
 !> per-task answer tables that results/answers.tsv and the summary are made of.
-module sphere_row_output
-    use, intrinsic :: iso_fortran_env, only: int64
-    use sphere_row_status, only: status_normal, status_invalid
+module sphere_row_tables
+    use sphere_row, only: status_normal, status_invalid
     implicit none
     private
-    public :: open_table, write_answer, answer_header, tab, itoa, split_tabs, cpu_model
+    public :: open_table, write_answer, answer_header, tab, split_tabs, cpu_model
 
     !> The field separator.
     character(len=*), parameter :: tab = achar(9)
@@ -13,11 +12,6 @@ module sphere_row_output
     !> cross-check of it (a closed form, another method) and how both were made.
     character(len=*), parameter :: answer_header = "key"//tab//"value"//tab//"check"//tab &
         //"check_value"//tab//"difference"//tab//"how"
-
-    !> Text of an integer of either kind.
-    interface itoa
-        module procedure itoa_default, itoa_int64
-    end interface itoa
 
 contains
 
@@ -51,24 +45,6 @@ contains
         write (unit, "(a)") key//tab//value//tab//check//tab//check_value//tab//difference &
             //tab//how
     end subroutine write_answer
-
-    !> Text of a default integer.
-    pure function itoa_default(i) result(s)
-        integer, intent(in) :: i
-        character(len=:), allocatable :: s
-        character(len=24) :: buf
-        write (buf, "(i0)") i
-        s = trim(buf)
-    end function itoa_default
-
-    !> Text of a 64-bit integer (counts, fingerprints).
-    pure function itoa_int64(i) result(s)
-        integer(int64), intent(in) :: i
-        character(len=:), allocatable :: s
-        character(len=24) :: buf
-        write (buf, "(i0)") i
-        s = trim(buf)
-    end function itoa_int64
 
     !> The tab-separated fields of `line` (trailing blanks of `line` ignored).
     pure subroutine split_tabs(line, fields)
@@ -114,4 +90,4 @@ contains
         close (unit)
     end function cpu_model
 
-end module sphere_row_output
+end module sphere_row_tables
