@@ -101,35 +101,41 @@ program c12_b2
     close (unit)
     close (unit_forms)
 
-    v_plain = scene%m(1)*scene%v0/sum(scene%m)
-    scene%e = 0
-    call simulate(scene, run)
-    call open_table(out, "b2_answers.tsv", answer_header, unit, stat, msg)
-    call stop_unless_normal(stat, msg)
-    call write_answer(unit, "b2.grid_points", itoa(n_grid), "-", "-", "-", &
-        "e from 1 down to 0 in equal steps; final velocities by the event-driven engine")
-    call write_answer(unit, "b2.max_polynomial_difference", str(max_diff), "closed_form", &
-        "0", str(max_diff), "largest |v_i(e) - P_i(e)| over the "//itoa(n_poly)// &
-        " grid points with a finite run, P_i the polynomial in e of that run's own "// &
-        "collision sequence (product of the maps (2)); listed in b2_closed_forms.tsv")
-    if (equal) then
-        call write_answer(unit, "b2.single_hit_e_min", str(e_single_min), "-", "-", "-", &
-            "smallest grid e of the range from e = 1 down in which sphere "//itoa(p)// &
-            " is hit once, after the impulse ran down the row: there v"//itoa(p)// &
-            " = v0 ((1+e)/2)^"//itoa(p - 1))
-        call write_answer(unit, "b2.single_hit_max_difference", str(max_single), &
-            "closed_form", "0", str(max_single), "largest |v"//itoa(p)// &
-            " - v0 ((1+e)/2)^"//itoa(p - 1)//"| over the "//itoa(n_single)//" grid points "// &
-            "where sphere "//itoa(p)//" is hit once")
-    end if
-    do i = 1, p
-        call write_answer(unit, "b2.e0.v"//itoa(i), str(run%v(i)), "closed_form", &
-            str(v_plain), str(run%v(i) - v_plain), "e = 0: the quasi-plastic limit, "// &
-            "common velocity m1 v0 / sum(m)")
-    end do
-    close (unit)
+    call write_answers()
 
 contains
+
+    !> The answers of task b2: how far the grid agrees with the closed forms, and
+    !> the plastic limit e = 0 against momentum conservation.
+    subroutine write_answers()
+        v_plain = scene%m(1)*scene%v0/sum(scene%m)
+        scene%e = 0
+        call simulate(scene, run)
+        call open_table(out, "b2_answers.tsv", answer_header, unit, stat, msg)
+        call stop_unless_normal(stat, msg)
+        call write_answer(unit, "b2.grid_points", itoa(n_grid), "-", "-", "-", &
+            "e from 1 down to 0 in equal steps; final velocities by the event-driven engine")
+        call write_answer(unit, "b2.max_polynomial_difference", str(max_diff), "closed_form", &
+            "0", str(max_diff), "largest |v_i(e) - P_i(e)| over the "//itoa(n_poly)// &
+            " grid points with a finite run, P_i the polynomial in e of that run's own "// &
+            "collision sequence (product of the maps (2)); listed in b2_closed_forms.tsv")
+        if (equal) then
+            call write_answer(unit, "b2.single_hit_e_min", str(e_single_min), "-", "-", "-", &
+                "smallest grid e of the range from e = 1 down in which sphere "//itoa(p)// &
+                " is hit once, after the impulse ran down the row: there v"//itoa(p)// &
+                " = v0 ((1+e)/2)^"//itoa(p - 1))
+            call write_answer(unit, "b2.single_hit_max_difference", str(max_single), &
+                "closed_form", "0", str(max_single), "largest |v"//itoa(p)// &
+                " - v0 ((1+e)/2)^"//itoa(p - 1)//"| over the "//itoa(n_single)//" grid points "// &
+                "where sphere "//itoa(p)//" is hit once")
+        end if
+        do i = 1, p
+            call write_answer(unit, "b2.e0.v"//itoa(i), str(run%v(i)), "closed_form", &
+                str(v_plain), str(run%v(i) - v_plain), "e = 0: the quasi-plastic limit, "// &
+                "common velocity m1 v0 / sum(m)")
+        end do
+        close (unit)
+    end subroutine write_answers
 
     !> One row per sphere: the polynomial of the current sequence and the grid
     !> e at which it was first met (from e = 1 down).

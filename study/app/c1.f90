@@ -72,38 +72,44 @@ program c12_c1
     end do
     close (unit)
 
-    ! by hand: where sphere p is hit once, v_p = v0 ((1+e)/2)^(p-1) = target v0
-    closed = 2*target**(1.0_qp/(scene%p - 1)) - 1
-    scene%e = main_result%x
-    call simulate(scene, run, events)
-    call sequence_of(events, pairs)
-    call open_table(out, "c1_answers.tsv", answer_header, unit, stat, msg)
-    call stop_unless_normal(stat, msg)
-    if (count(pairs == scene%p - 1) == 1 .and. all(scene%m == scene%m(1))) then
-        call write_answer(unit, "c1.e", str(main_result%x), "closed_form", str(closed), &
-            str(main_result%x - closed), "secant in real(16) from e = "//str(x0)//", "// &
-            str(x1)//"; sequence at the root "//sequence_text(pairs)//" hits sphere "// &
-            itoa(scene%p)//" once, so v"//itoa(scene%p)//" = v0 ((1+e)/2)^"// &
-            itoa(scene%p - 1)//" there and e = 2 (target)^(1/"//itoa(scene%p - 1)//") - 1")
-    else
-        call write_answer(unit, "c1.e", str(main_result%x), "-", "-", "-", &
-            "secant in real(16) from e = "//str(x0)//", "//str(x1)//"; sequence at the "// &
-            "root "//sequence_text(pairs))
-    end if
-    call write_answer(unit, "c1.v4", str(run%v(scene%p)), "target", str(target*scene%v0), &
-        str(run%v(scene%p) - target*scene%v0), "final velocity of the last sphere at c1.e")
-    call write_answer(unit, "c1.iterations", itoa(main_result%iterations), "-", "-", "-", &
-        "secant steps to |v4 - target| <= "//str(f_tol)//": "//secant_word(main_result%status))
-    call write_answer(unit, "c1.status", secant_word(main_result%status), "-", "-", "-", &
-        "flat, left_interval and stagnated are reported, not returned as roots; "// &
-        "see c1_starts.tsv")
-    close (unit)
+    call write_answers()
     if (main_result%status /= secant_converged) then
         write (error_unit, "(a)") name//": the secant from x0, x1 did not converge: "// &
             secant_word(main_result%status)//" (tables written)"
     end if
 
 contains
+
+    !> The answers of task c1: the root, its residual, the iterations, checked
+    !> against the closed form where sphere p is struck once.
+    subroutine write_answers()
+        ! by hand: where sphere p is hit once, v_p = v0 ((1+e)/2)^(p-1) = target v0
+        closed = 2*target**(1.0_qp/(scene%p - 1)) - 1
+        scene%e = main_result%x
+        call simulate(scene, run, events)
+        call sequence_of(events, pairs)
+        call open_table(out, "c1_answers.tsv", answer_header, unit, stat, msg)
+        call stop_unless_normal(stat, msg)
+        if (count(pairs == scene%p - 1) == 1 .and. all(scene%m == scene%m(1))) then
+            call write_answer(unit, "c1.e", str(main_result%x), "closed_form", str(closed), &
+                str(main_result%x - closed), "secant in real(16) from e = "//str(x0)//", "// &
+                str(x1)//"; sequence at the root "//sequence_text(pairs)//" hits sphere "// &
+                itoa(scene%p)//" once, so v"//itoa(scene%p)//" = v0 ((1+e)/2)^"// &
+                itoa(scene%p - 1)//" there and e = 2 (target)^(1/"//itoa(scene%p - 1)//") - 1")
+        else
+            call write_answer(unit, "c1.e", str(main_result%x), "-", "-", "-", &
+                "secant in real(16) from e = "//str(x0)//", "//str(x1)//"; sequence at the "// &
+                "root "//sequence_text(pairs))
+        end if
+        call write_answer(unit, "c1.v4", str(run%v(scene%p)), "target", str(target*scene%v0), &
+            str(run%v(scene%p) - target*scene%v0), "final velocity of the last sphere at c1.e")
+        call write_answer(unit, "c1.iterations", itoa(main_result%iterations), "-", "-", "-", &
+            "secant steps to |v4 - target| <= "//str(f_tol)//": "//secant_word(main_result%status))
+        call write_answer(unit, "c1.status", secant_word(main_result%status), "-", "-", "-", &
+            "flat, left_interval and stagnated are reported, not returned as roots; "// &
+            "see c1_starts.tsv")
+        close (unit)
+    end subroutine write_answers
 
     !> v4(e) - target v0, the residual of the boundary value problem.
     function residual(e) result(f)
