@@ -69,46 +69,9 @@ program c12_b1
     n_boundaries = size(boundaries)
     call sort(boundaries)
 
-    call open_table(out, "b1_scan.tsv", "e"//tab//"collisions"//tab//"status"//tab// &
-        "sequence_hash", unit, stat, msg)
-    call stop_unless_normal(stat, msg)
-    do j = 1, n_scan
-        write (unit, "(a)") str(e_scan(j))//tab//itoa(n_scan_runs(j))//tab// &
-            status_word(status_scan(j))//tab//itoa(class_scan(j))
-    end do
-    close (unit)
+    call write_scan()
 
-    ! intervals between consecutive boundaries, each with its sequence
-    call open_table(out, "b1_intervals.tsv", "e_low"//tab//"e_high"//tab//"width"//tab// &
-        "collisions"//tab//"status"//tab//"sequence", unit, stat, msg)
-    call stop_unless_normal(stat, msg)
-    n_intervals = 0
-    e_quasi = -1.0_qp
-    do j = 0, n_boundaries
-        if (j == 0) then
-            lo = 0.0_qp
-        else
-            lo = boundaries(j)
-        end if
-        if (j == n_boundaries) then
-            hi = 1.0_qp
-        else
-            hi = boundaries(j + 1)
-        end if
-        mid = 0.5_qp*(lo + hi)
-        call classify(mid, class_mid)
-        if (run%status == status_collapsed) then
-            e_quasi = max(e_quasi, hi)
-            write (unit, "(a)") str(lo)//tab//str(hi)//tab//str(hi - lo)//tab// &
-                itoa(run%n)//tab//status_word(run%status)//tab//"-"
-        else
-            call sequence_of(events, pairs)
-            write (unit, "(a)") str(lo)//tab//str(hi)//tab//str(hi - lo)//tab// &
-                itoa(run%n)//tab//status_word(run%status)//tab//sequence_text(pairs)
-        end if
-        n_intervals = n_intervals + 1
-    end do
-    close (unit)
+    call write_intervals()
 
     ! 3. the critical restitution by simulation alone, with a tolerance near
     !    the bottom of real128's range: bisect finite against collapsed
@@ -186,46 +149,101 @@ program c12_b1
         intercept = (sy - slope*sx)/n_fit
     end if
 
-    call open_table(out, "b1_answers.tsv", answer_header, unit, stat, msg)
-    call stop_unless_normal(stat, msg)
-    if (e_c > 0) then
-        call write_answer(unit, "b1.e_crit", str(e_c), "closed_form_3-2sqrt2", str(closed), &
-            str(e_c - closed), "e where the rate map of the collapse cycle "// &
-            sequence_text(cycle)//" (period "//itoa(period)//", from the run at e = "// &
-            str(e_lo)//") gets a complex eigenvalue pair: bisection of its discriminant "// &
-            "in real(16); it coincides with tan^2(pi/8) = 3 - 2 sqrt(2)")
-    else
-        call write_answer(unit, "b1.e_crit", str(e_c_sim), "-", "-", "-", &
-            "no collapse cycle found for this scene (or not 4 spheres): the "// &
-            "simulation bound b1.e_crit_simulation is given")
-    end if
-    call write_answer(unit, "b1.e_crit_simulation", str(e_c_sim), "b1.e_crit", str(e_c), &
-        str(e_c_sim - e_c), "bisection of collapsed against finite runs with tol = "// &
-        str(tol_fine)//"; a finite run this close to e_crit shrinks its relative "// &
-        "velocities below any fixed tolerance, so this bound lies above e_crit")
-    call write_answer(unit, "b1.exponent", str(slope), "theory", str(-0.5_qp), &
-        str(slope + 0.5_qp), "least-squares slope of log n against log(e - e_crit) over "// &
-        itoa(n_fit)//" points with n >= 200; near e_crit the cycle map has eigenvalues "// &
-        "r exp(+-i theta) with theta ~ sqrt(e - e_crit), and the collisions end after "// &
-        "about pi/theta cycles")
-    call write_answer(unit, "b1.prefactor", str(exp(intercept)), "-", "-", "-", &
-        "n ~ prefactor (e - e_crit)^exponent")
-    call write_answer(unit, "b1.e_quasi_plastic", str(e_quasi), "-", "-", "-", &
-        "largest e where the scene's default tolerance (the relative velocities fall "// &
-        "below epsilon v0) reports the quasi-plastic case: the definition's "// &
-        "'quasi-plastic case reached'")
-    call write_answer(unit, "b1.scan_points", itoa(n_scan), "-", "-", "-", &
-        "e from 1 down to 0 in equal steps")
-    call write_answer(unit, "b1.intervals", itoa(n_intervals), "-", "-", "-", &
-        "intervals of constant n and sequence found, each end bisected to "// &
-        str(resolution)//" (changes with n > "//itoa(n_bisect_max)//" on both sides are "// &
-        "left to the critical table)")
-    call write_answer(unit, "b1.n_at_e1", itoa(n_scan_runs(1)), "closed_form", &
-        itoa(scene%p - 1), itoa(n_scan_runs(1) - (scene%p - 1)), &
-        "e = 1: one collision per pair")
-    close (unit)
+    call write_answers()
 
 contains
+
+    !> The answers of task b1: the critical restitution from the collapse cycle
+    !> and by simulation, against 3 - 2 sqrt(2); the power law of n near it;
+    !> the top of the quasi-plastic range; the scan and its intervals.
+    subroutine write_answers()
+        call open_table(out, "b1_answers.tsv", answer_header, unit, stat, msg)
+        call stop_unless_normal(stat, msg)
+        if (e_c > 0) then
+            call write_answer(unit, "b1.e_crit", str(e_c), "closed_form_3-2sqrt2", str(closed), &
+                str(e_c - closed), "e where the rate map of the collapse cycle "// &
+                sequence_text(cycle)//" (period "//itoa(period)//", from the run at e = "// &
+                str(e_lo)//") gets a complex eigenvalue pair: bisection of its discriminant "// &
+                "in real(16); it coincides with tan^2(pi/8) = 3 - 2 sqrt(2)")
+        else
+            call write_answer(unit, "b1.e_crit", str(e_c_sim), "-", "-", "-", &
+                "no collapse cycle found for this scene (or not 4 spheres): the "// &
+                "simulation bound b1.e_crit_simulation is given")
+        end if
+        call write_answer(unit, "b1.e_crit_simulation", str(e_c_sim), "b1.e_crit", str(e_c), &
+            str(e_c_sim - e_c), "bisection of collapsed against finite runs with tol = "// &
+            str(tol_fine)//"; a finite run this close to e_crit shrinks its relative "// &
+            "velocities below any fixed tolerance, so this bound lies above e_crit")
+        call write_answer(unit, "b1.exponent", str(slope), "theory", str(-0.5_qp), &
+            str(slope + 0.5_qp), "least-squares slope of log n against log(e - e_crit) over "// &
+            itoa(n_fit)//" points with n >= 200; near e_crit the cycle map has eigenvalues "// &
+            "r exp(+-i theta) with theta ~ sqrt(e - e_crit), and the collisions end after "// &
+            "about pi/theta cycles")
+        call write_answer(unit, "b1.prefactor", str(exp(intercept)), "-", "-", "-", &
+            "n ~ prefactor (e - e_crit)^exponent")
+        call write_answer(unit, "b1.e_quasi_plastic", str(e_quasi), "-", "-", "-", &
+            "largest e where the scene's default tolerance (the relative velocities fall "// &
+            "below epsilon v0) reports the quasi-plastic case: the definition's "// &
+            "'quasi-plastic case reached'")
+        call write_answer(unit, "b1.scan_points", itoa(n_scan), "-", "-", "-", &
+            "e from 1 down to 0 in equal steps")
+        call write_answer(unit, "b1.intervals", itoa(n_intervals), "-", "-", "-", &
+            "intervals of constant n and sequence found, each end bisected to "// &
+            str(resolution)//" (changes with n > "//itoa(n_bisect_max)//" on both sides are "// &
+            "left to the critical table)")
+        call write_answer(unit, "b1.n_at_e1", itoa(n_scan_runs(1)), "closed_form", &
+            itoa(scene%p - 1), itoa(n_scan_runs(1) - (scene%p - 1)), &
+            "e = 1: one collision per pair")
+        close (unit)
+    end subroutine write_answers
+
+    !> b1_intervals.tsv: the intervals between consecutive changes, each with its
+    !> collision count and sequence; e_quasi is the top of the collapsed ones.
+    subroutine write_intervals()
+        ! intervals between consecutive boundaries, each with its sequence
+        call open_table(out, "b1_intervals.tsv", "e_low"//tab//"e_high"//tab//"width"//tab// &
+            "collisions"//tab//"status"//tab//"sequence", unit, stat, msg)
+        call stop_unless_normal(stat, msg)
+        n_intervals = 0
+        e_quasi = -1.0_qp
+        do j = 0, n_boundaries
+            if (j == 0) then
+                lo = 0.0_qp
+            else
+                lo = boundaries(j)
+            end if
+            if (j == n_boundaries) then
+                hi = 1.0_qp
+            else
+                hi = boundaries(j + 1)
+            end if
+            mid = 0.5_qp*(lo + hi)
+            call classify(mid, class_mid)
+            if (run%status == status_collapsed) then
+                e_quasi = max(e_quasi, hi)
+                write (unit, "(a)") str(lo)//tab//str(hi)//tab//str(hi - lo)//tab// &
+                    itoa(run%n)//tab//status_word(run%status)//tab//"-"
+            else
+                call sequence_of(events, pairs)
+                write (unit, "(a)") str(lo)//tab//str(hi)//tab//str(hi - lo)//tab// &
+                    itoa(run%n)//tab//status_word(run%status)//tab//sequence_text(pairs)
+            end if
+            n_intervals = n_intervals + 1
+        end do
+        close (unit)
+    end subroutine write_intervals
+
+    !> b1_scan.tsv: the scan of e, one row per value.
+    subroutine write_scan()
+        call open_table(out, "b1_scan.tsv", "e"//tab//"collisions"//tab//"status"//tab// &
+            "sequence_hash", unit, stat, msg)
+        call stop_unless_normal(stat, msg)
+        do j = 1, n_scan
+            write (unit, "(a)") str(e_scan(j))//tab//itoa(n_scan_runs(j))//tab// &
+                status_word(status_scan(j))//tab//itoa(class_scan(j))
+        end do
+        close (unit)
+    end subroutine write_scan
 
     !> classify as a function, for bisect_changes.
     function class_of(e) result(class)
