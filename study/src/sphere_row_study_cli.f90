@@ -7,7 +7,7 @@
 !> `read_keys`:
 !>
 !>     call start_program(cli, "c12-b2", "C12 task b2: ...")
-!>     call add_scene_keys(cli, set_by_program="the grid of e")
+!>     call add_scene_keys(cli, e_set_by="the grid of e")
 !>     call cli%add_int("n_grid", "1001", "points of the grid of e in [0, 1]", lo=2)
 !>     call read_keys(cli, scene)
 !>     n_grid = cli%get_int("n_grid")
