@@ -1,8 +1,11 @@
 # ARGESIM Comparison 12 — build, test and the reproducible study.
 #
-#   make test            fpm test (installs missing prerequisites first)
+#   make test            fpm test of the engine and of the study (installs missing
+#                        prerequisites first)
 #   make study           every task's tables, figures and results/summary.md
 #   make check-results   regenerate the study elsewhere and compare with results/
+#   make docs            API documentation (FORD) in build/docs/index.html
+#   make lint            the Fortran linter fortitude, rules in fortitude.toml
 #   make help            this list
 #
 # Programs -> tables -> figures: each table is made by its study program, each
@@ -18,7 +21,14 @@ RESULTS ?= results
 BUILD_STAMP := build/.release-stamp
 INC_STAMP := build/.inc-stamp
 BIN := build/release/bin
-SOURCES := $(wildcard src/*.f90 src/*.inc study/*.f90 app/*.f90) fpm.toml
+# the engine (root package) and the study package that uses it
+SOURCES := $(wildcard include/*.h src/*.f90 src/*.inc study/src/*.f90 study/src/*.inc \
+           study/app/*.f90) fpm.toml study/fpm.toml
+
+# NO_XDP=1 builds without the 80-bit extended kind, as a compiler without
+# real(10) does (aarch64): `make test NO_XDP=1` tests that build
+KIND_FLAGS := $(if $(NO_XDP),--flag -DSPHERE_ROW_NO_XDP)
+TEST_FLAGS := $(if $(NO_XDP),--profile debug $(KIND_FLAGS))
 
 # tables of each study program (grouped: one run writes them all)
 A1 := $(RESULTS)/a1_paths.tsv $(RESULTS)/a1_answers.tsv
@@ -42,7 +52,8 @@ PNG := $(FIGURES:%=$(RESULTS)/%.png) $(RESULTS)/methods_work_precision.png \
 SVG := $(FIGURES:%=$(RESULTS)/%.svg) $(RESULTS)/methods_work_precision.svg \
        $(RESULTS)/methods_stability.svg
 
-.PHONY: all help prereqs test study tables figures bench check-results clean
+.PHONY: all help prereqs test check-layers study tables figures bench check-results \
+        docs lint clean
 
 all: study
 
@@ -52,8 +63,17 @@ help: ## list the targets
 prereqs: ## install missing gfortran, GSL, gnuplot, fpm (Debian, root) or say how
 	@bash .ci/prereqs
 
-test: prereqs $(INC_STAMP) ## run the test suite (fpm test)
-	$(FPM) test
+# the engine's and the CLI's tests (root package), then the study's (study/);
+# the last line adds up both runs' `N passed, N failed` (a run that reports
+# no such line, e.g. because it did not build, counts as one failure)
+test: prereqs check-layers $(INC_STAMP) ## run both packages' tests; last line: N passed, N failed
+	@mkdir -p build
+	@set -o pipefail; status=0; \
+	$(FPM) test $(TEST_FLAGS) 2>&1 | tee build/test-engine.log || status=1; \
+	(cd study && $(FPM) test $(TEST_FLAGS)) 2>&1 | tee build/test-study.log || status=1; \
+	awk '/^[0-9]+ passed, [0-9]+ failed$$/ { p += $$1; f += $$3; n++ } \
+		END { f += 2 - n; printf "%d passed, %d failed\n", p, f; exit f > 0 }' \
+		build/test-engine.log build/test-study.log && exit $$status
 
 study: prereqs ## tables, figures, answers.tsv, bench.tsv and summary.md in results/
 	@$(MAKE) --no-print-directory $(RESULTS)/summary.md $(PNG) $(SVG) $(RESULTS)/bench.tsv
@@ -64,16 +84,33 @@ figures: $(PNG) $(SVG) ## the study's figures only
 
 bench: $(RESULTS)/bench.tsv ## speed of the engine per precision and of the study
 
-# fpm does not see edits of an included template (src/*.inc): drop the objects
-# of every source that includes one, so that fpm compiles them again.
-$(INC_STAMP): $(wildcard src/*.inc)
+# The layers: the core below the umbrella module (kinds, status, format, the
+# per-kind engine) never imports it; everything above it (CLI, study, tests)
+# never imports a per-kind engine module but the umbrella's names; the root
+# package links no GSL.
+CORE := src/sphere_row_kinds.f90 src/sphere_row_status.f90 src/sphere_row_format.f90 \
+        src/sphere_row_engine.inc $(wildcard src/sphere_row_engine_*.f90)
+ABOVE := $(filter-out src/sphere_row.f90 $(CORE),$(wildcard src/*.f90 app/*.f90 test/*.f90 \
+         study/*/*.f90 study/*/*.inc))
+check-layers: ## check the layer rules (umbrella imports, per-kind imports, GSL)
+	@! grep -nE '^ *use +sphere_row *(,|$$)' $(CORE) || { echo "the core imports the umbrella"; exit 1; }
+	@! grep -nE '^ *use +sphere_row_engine_' $(ABOVE) || { echo "a per-kind engine module used above the umbrella"; exit 1; }
+	@! grep -niE '^ *link *=.*gsl' fpm.toml || { echo "the root package links GSL"; exit 1; }
+
+# fpm does not see edits of an included template (src/*.inc, study/src/*.inc):
+# drop the objects of every source that includes one, in both packages' build
+# trees (in the study's, the root's sources are named .._src_*), and the linked
+# programs, which fpm does not relink on its own, so that fpm builds them again.
+$(INC_STAMP): $(wildcard src/*.inc study/src/*.inc)
 	@mkdir -p build
-	for f in $$(grep -l '^ *include "' src/*.f90); do \
-		rm -f build/gfortran_*/sphere_row/src_$$(basename $$f).o*; done
+	for f in $$(grep -l '^ *include "' src/*.f90 study/src/*.f90); do \
+		rm -f {,study/}build/gfortran_*/*/{,.._}src_$$(basename $$f).o*; done
+	rm -f {,study/}build/gfortran_*/{app,test}/*
 	@touch $@
 
+# the study package's programs (with tsv-compare); the CLI is not needed here
 $(BUILD_STAMP): $(SOURCES) $(INC_STAMP)
-	$(FPM) install --profile release --prefix $(abspath build/release)
+	cd study && $(FPM) install --profile release $(KIND_FLAGS) --prefix $(abspath build/release)
 	@touch $@
 
 # run one study program, keeping its wall time apart from the tables
@@ -134,5 +171,13 @@ check-results: prereqs ## regenerate the tables in build/ and compare with resul
 	$(MAKE) --no-print-directory RESULTS=build/check tables build/check/answers.tsv
 	$(BIN)/tsv-compare committed=$(RESULTS) fresh=build/check
 
-clean: ## remove the build directory (results/ stays: it is committed)
-	rm -rf build
+docs: ## API documentation from the !> comments (FORD) in build/docs/index.html
+	@bash .ci/prereqs docs
+	ford ford.md
+
+lint: ## check the Fortran sources with fortitude (rules and exceptions: fortitude.toml)
+	@bash .ci/prereqs lint
+	fortitude check src app test study/src study/app study/test tools/testsuite/src
+
+clean: ## remove the build directories (results/ stays: it is committed)
+	rm -rf build study/build tools/testsuite/build

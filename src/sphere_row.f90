@@ -1,24 +1,28 @@
+#include "sphere_row_kinds.h"
 !> Umbrella module: the public API of the package.
 !>
 !> The engine in real128, the working precision, is exported under its plain
 !> type names (scene_t, run_t, event_log_t); the same engine in the other kinds
 !> under suffixed names (scene_dp_t, ...). The procedures are generic over all
-!> four kinds.
+!> four kinds (three where the compiler has no 80-bit extended kind: see
+!> include/sphere_row_kinds.h).
 module sphere_row
     use sphere_row_kinds, only: sp, dp, xdp, qp
     use sphere_row_status, only: status_normal, status_collapsed, status_max_collisions, &
         status_invalid, event_start, event_collision, event_collapse, status_word
-    use sphere_row_format, only: real_str
+    use sphere_row_format, only: real_str, itoa
     use sphere_row_engine_qp, only: scene_t, run_t, &
         event_log_t, scene_init_qp => scene_init_wp, &
         scene_check_qp => scene_check_wp, simulate_qp => simulate_wp, &
         gaps_at_qp => gaps_at_wp, kinetic_energy_qp => kinetic_energy_wp, &
         momentum_qp => momentum_wp, str_qp => str_wp
+#ifdef SPHERE_ROW_XDP
     use sphere_row_engine_xdp, only: scene_xdp_t => scene_t, run_xdp_t => run_t, &
         event_log_xdp_t => event_log_t, scene_init_xdp => scene_init_wp, &
         scene_check_xdp => scene_check_wp, simulate_xdp => simulate_wp, &
         gaps_at_xdp => gaps_at_wp, kinetic_energy_xdp => kinetic_energy_wp, &
         momentum_xdp => momentum_wp, str_xdp => str_wp
+#endif
     use sphere_row_engine_dp, only: scene_dp_t => scene_t, run_dp_t => run_t, &
         event_log_dp_t => event_log_t, scene_init_dp => scene_init_wp, &
         scene_check_dp => scene_check_wp, simulate_dp => simulate_wp, &
@@ -33,46 +37,69 @@ module sphere_row
     private
     public :: sp, dp, xdp, qp
     public :: status_normal, status_collapsed, status_max_collisions, status_invalid
-    public :: event_start, event_collision, event_collapse, status_word, real_str
+    public :: event_start, event_collision, event_collapse, status_word, real_str, itoa
     public :: scene_t, run_t, event_log_t
+#ifdef SPHERE_ROW_XDP
     public :: scene_xdp_t, run_xdp_t, event_log_xdp_t
+#endif
     public :: scene_dp_t, run_dp_t, event_log_dp_t
     public :: scene_sp_t, run_sp_t, event_log_sp_t
     public :: scene_init, scene_check, simulate, gaps_at, kinetic_energy, momentum, str
 
     !> Build and check a scene (see scene_init_wp in sphere_row_engine.inc).
     interface scene_init
-        module procedure scene_init_qp, scene_init_xdp, scene_init_dp, scene_init_sp
+        module procedure scene_init_qp, scene_init_dp, scene_init_sp
+#ifdef SPHERE_ROW_XDP
+        module procedure scene_init_xdp
+#endif
     end interface scene_init
 
     !> Check every parameter of a scene.
     interface scene_check
-        module procedure scene_check_qp, scene_check_xdp, scene_check_dp, scene_check_sp
+        module procedure scene_check_qp, scene_check_dp, scene_check_sp
+#ifdef SPHERE_ROW_XDP
+        module procedure scene_check_xdp
+#endif
     end interface scene_check
 
     !> Run a scene to its end.
     interface simulate
-        module procedure simulate_qp, simulate_xdp, simulate_dp, simulate_sp
+        module procedure simulate_qp, simulate_dp, simulate_sp
+#ifdef SPHERE_ROW_XDP
+        module procedure simulate_xdp
+#endif
     end interface simulate
 
     !> Gaps at a given time from an event log.
     interface gaps_at
-        module procedure gaps_at_qp, gaps_at_xdp, gaps_at_dp, gaps_at_sp
+        module procedure gaps_at_qp, gaps_at_dp, gaps_at_sp
+#ifdef SPHERE_ROW_XDP
+        module procedure gaps_at_xdp
+#endif
     end interface gaps_at
 
     !> Total kinetic energy of velocities v.
     interface kinetic_energy
-        module procedure kinetic_energy_qp, kinetic_energy_xdp, kinetic_energy_dp, kinetic_energy_sp
+        module procedure kinetic_energy_qp, kinetic_energy_dp, kinetic_energy_sp
+#ifdef SPHERE_ROW_XDP
+        module procedure kinetic_energy_xdp
+#endif
     end interface kinetic_energy
 
     !> Total momentum of velocities v.
     interface momentum
-        module procedure momentum_qp, momentum_xdp, momentum_dp, momentum_sp
+        module procedure momentum_qp, momentum_dp, momentum_sp
+#ifdef SPHERE_ROW_XDP
+        module procedure momentum_xdp
+#endif
     end interface momentum
 
     !> Text form of a real with every significant digit of its kind.
     interface str
-        module procedure str_qp, str_xdp, str_dp, str_sp
+        module procedure str_qp, str_dp, str_sp
+#ifdef SPHERE_ROW_XDP
+        module procedure str_xdp
+#endif
     end interface str
 
 end module sphere_row

@@ -1,139 +1,1152 @@
-!> Command-line input shared by the CLI and the study programs.
+!> The front door of every program: a registry of keys that drives parsing,
+!> validation and `--help`, strict number parsing, scene files, and the scene
+!> keys shared by the CLI and the study programs.
 !>
-!> Every program takes `key=value` arguments; the scene keys below are common
-!> to all of them, and a single argument without `=` names a namelist file with
-!> a `&scene` group of the same keys. Parsing is strict: a value must be a
-!> finite number written as one, and every refusal comes back as a status and a
-!> one-line message naming the key, the value and what is allowed.
+!> A program registers its keys in a `cli_t` (name, kind of value, default,
+!> allowed range, help line), calls `read_command_line` and then asks the
+!> registry for values. Everything a user can give is checked against that one
+!> table: the key must be known and given once, its value must be written as a
+!> number of the key's kind (the whole text, nothing more) and lie in the
+!> key's range, and two keys of which one overrides the other may not both be
+!> given. A refusal is an `error_t` whose message names the key, the value as
+!> given and what is allowed; `fail` prints it as one line and stops with
+!> exit status 2.
+!>
+!> A program with the scene keys and keys of its own:
+!>
+!>     type(cli_t) :: cli
+!>     type(scene_t) :: scene
+!>     type(error_t), allocatable :: error
+!>     cli%name = "c12-b2"
+!>     cli%synopsis = "[FILE] [key=value ...]"
+!>     call add_scene_keys(cli)
+!>     call cli%add_word("out", "results", "directory of the tables")
+!>     call cli%add_int("n_grid", "801", "values of e on the grid", lo=2)
+!>     call read_command_line(cli)
+!>     call scene_from_cli(cli, scene, error)
+!>     if (allocated(error)) call fail(cli%name, error)
+!>     n_grid = cli%get_int("n_grid")
 module sphere_row_args
+    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit, int64, iostat_end, &
+        iostat_eor
     use sphere_row_kinds, only: qp
-    use sphere_row_status, only: status_normal, status_invalid
+    use sphere_row_format, only: itoa
+    use sphere_row_status, only: status_normal
+    use sphere_row_error, only: error_t, fatal_error, error_io
     use sphere_row, only: scene_t, scene_init
     implicit none
     private
-    public :: get_args, split_key_value, parse_real, parse_int, parse_reals, parse_flag
-    public :: scene_from_args, scene_help, unused_arg, wants_help, take_key, real_key, int_key
+    ! the program kit
+    public :: cli_t, string_t, read_command_line, fail, command_args
+    public :: read_real, read_int, read_reals, is_real_text, is_int_text, printable
+    public :: short_text
+    ! the scene keys
+    public :: add_scene_keys, scene_from_cli, max_spheres
 
-    !> Longest `masses` or `gaps` list a namelist file may hold.
-    integer, parameter :: max_list = 100000
+    !> Kinds of value a key takes.
+    integer, parameter :: key_int = 1, key_real = 2, key_reals = 3, key_flag = 4, key_word = 5
+
+    !> Largest number of spheres: every per-sphere array of a run is allocated
+    !> from p, so p is bounded to what fits in memory many times over.
+    integer, parameter :: max_spheres = 1000000
+
+    !> Column where the help text of a key starts in `--help`.
+    integer, parameter :: help_column = 22
+
+    character(len=*), parameter :: nl = new_line("a")
+    character(len=*), parameter :: number_rule = &
+        "a number such as 0.25, -3, 1e-5 or 2.5d3"
+
+    !> A string of its own length (command-line arguments keep trailing blanks).
+    type :: string_t
+        !> The text.
+        character(len=:), allocatable :: s
+    end type string_t
+
+    !> One key of a program: what it takes and, after parsing, its value.
+    type :: key_t
+        !> The key as typed before `=`.
+        character(len=:), allocatable :: name
+        !> key_int, key_real, key_reals, key_flag or key_word.
+        integer :: kind = key_real
+        !> Text read as the value when the key is not given ("" : no value).
+        character(len=:), allocatable :: default
+        !> How `--help` shows the value after `name=` (usually the default).
+        character(len=:), allocatable :: shown
+        !> What is allowed, as messages and `--help` say it.
+        character(len=:), allocatable :: allowed
+        !> One line of `--help`.
+        character(len=:), allocatable :: help
+        !> A key that this one overrides: giving both is refused ("" : none).
+        character(len=:), allocatable :: overrides
+        !> True if a scene file may set the key.
+        logical :: in_file = .false.
+        !> Range of a number (of every entry of a list): lo <= x <= hi, with
+        !> strict inequalities where the side is open.
+        real(qp) :: lo = 0.0_qp, hi = 0.0_qp
+        logical :: has_lo = .false., has_hi = .false., lo_open = .false., hi_open = .false.
+        !> Range of an integer.
+        integer :: ilo = -huge(1), ihi = huge(1)
+        !> True once the user gave the key.
+        logical :: given = .false.
+        !> Where the value came from: "" (command line) or the scene file's path.
+        character(len=:), allocatable :: source
+        !> The value as text, as given (or the default).
+        character(len=:), allocatable :: text
+        !> The value, in the member of its kind.
+        integer :: n = 0
+        real(qp) :: x = 0.0_qp
+        real(qp), allocatable :: xs(:)
+        logical :: flag = .false.
+    end type key_t
+
+    !> A program's command line: its keys and the text of its `--help`.
+    type :: cli_t
+        !> Program name, the first word of every message.
+        character(len=:), allocatable :: name
+        !> What follows `usage: name` in `--help`.
+        character(len=:), allocatable :: synopsis
+        !> Paragraph of `--help` before the key list (lines separated by new_line).
+        character(len=:), allocatable :: about
+        !> Registered keys, in the order `--help` lists them.
+        type(key_t), allocatable :: keys(:)
+        !> True if a bare argument names a scene file (a `&scene` namelist group).
+        logical :: files = .false.
+        !> True after parse if `--help`, `-h` or `help` was given.
+        logical :: help = .false.
+    contains
+        !> Register a key taking an integer.
+        procedure :: add_int => cli_add_int
+        !> Register a key taking a real.
+        procedure :: add_real => cli_add_real
+        !> Register a key taking a comma-separated list of reals.
+        procedure :: add_reals => cli_add_reals
+        !> Register a key taking yes or no.
+        procedure :: add_flag => cli_add_flag
+        !> Register a key taking a word (a name, a path).
+        procedure :: add_word => cli_add_word
+        !> Read arguments into the keys' values.
+        procedure :: parse => cli_parse
+        !> The text of `--help`.
+        procedure :: usage => cli_usage
+        !> True if the user gave the key.
+        procedure :: given => cli_given
+        !> The value of an integer key.
+        procedure :: get_int => cli_get_int
+        !> The value of a real key.
+        procedure :: get_real => cli_get_real
+        !> The value of a list key (size 0 if unset).
+        procedure :: get_reals => cli_get_reals
+        !> The value of a flag key.
+        procedure :: get_flag => cli_get_flag
+        !> The value of a word key.
+        procedure :: get_word => cli_get_word
+        !> The value of a key as given (or its default), for messages.
+        procedure :: get_text => cli_get_text
+        !> Names of every key, comma-separated.
+        procedure :: key_list => cli_key_list
+    end type cli_t
 
 contains
 
-    !> All command-line arguments, each trimmed.
-    subroutine get_args(args)
-        character(len=:), allocatable, intent(out) :: args(:)
-        integer :: i, n, length, longest
-        n = command_argument_count()
-        longest = 1
-        do i = 1, n
-            call get_command_argument(i, length=length)
-            longest = max(longest, length)
-        end do
-        allocate (character(len=longest) :: args(n))
-        do i = 1, n
-            call get_command_argument(i, args(i))
-        end do
-    end subroutine get_args
+    ! ------------------------------------------------------------------
+    ! the program kit: registration
+    ! ------------------------------------------------------------------
 
-    !> True if any argument asks for the usage text.
-    pure logical function wants_help(args)
-        character(len=*), intent(in) :: args(:)
-        integer :: i
-        wants_help = .false.
+    !> Register an integer key, allowed in [lo, hi] (bounds optional);
+    !> `shown` replaces the default in `--help` (a default of "" is no value).
+    pure subroutine cli_add_int(this, name, default, help, lo, hi, in_file, shown)
+        class(cli_t), intent(inout) :: this
+        character(len=*), intent(in) :: name, default, help
+        integer, intent(in), optional :: lo, hi
+        logical, intent(in), optional :: in_file
+        character(len=*), intent(in), optional :: shown
+        type(key_t) :: key
+        call new_key(key, name, key_int, default, help, in_file)
+        if (present(shown)) key%shown = shown
+        if (present(lo)) key%ilo = lo
+        if (present(hi)) key%ihi = hi
+        if (key%ilo > -huge(1) .and. key%ihi < huge(1)) then
+            key%allowed = "an integer "//itoa(key%ilo)//" <= "//name//" <= "//itoa(key%ihi)
+        else if (key%ilo > -huge(1)) then
+            key%allowed = "an integer "//name//" >= "//itoa(key%ilo)
+        else if (key%ihi < huge(1)) then
+            key%allowed = "an integer "//name//" <= "//itoa(key%ihi)
+        else
+            key%allowed = "an integer"
+        end if
+        call append_key(this, key)
+    end subroutine cli_add_int
+
+    !> Register a real key, allowed in the range given by lo and hi (each
+    !> optional, each closed unless said open); `allowed` replaces the text
+    !> made from the range; `shown` replaces the default in `--help`.
+    pure subroutine cli_add_real(this, name, default, help, lo, hi, lo_open, hi_open, allowed, &
+        shown, in_file)
+        class(cli_t), intent(inout) :: this
+        character(len=*), intent(in) :: name, default, help
+        real(qp), intent(in), optional :: lo, hi
+        logical, intent(in), optional :: lo_open, hi_open, in_file
+        character(len=*), intent(in), optional :: allowed, shown
+        type(key_t) :: key
+        call new_key(key, name, key_real, default, help, in_file)
+        call set_range(key, lo, hi, lo_open, hi_open)
+        key%allowed = range_text(key, name)
+        if (present(allowed)) key%allowed = allowed
+        if (present(shown)) key%shown = shown
+        call append_key(this, key)
+    end subroutine cli_add_real
+
+    !> Register a key taking a comma-separated list of reals, each in the range
+    !> given by lo and hi; `shown` is how `--help` shows the list.
+    pure subroutine cli_add_reals(this, name, shown, help, lo, hi, lo_open, hi_open, overrides, &
+        in_file)
+        class(cli_t), intent(inout) :: this
+        character(len=*), intent(in) :: name, shown, help
+        real(qp), intent(in), optional :: lo, hi
+        logical, intent(in), optional :: lo_open, hi_open, in_file
+        character(len=*), intent(in), optional :: overrides
+        type(key_t) :: key
+        call new_key(key, name, key_reals, "", help, in_file)
+        call set_range(key, lo, hi, lo_open, hi_open)
+        key%allowed = "comma-separated numbers, each "//range_text(key, "value")
+        key%shown = shown
+        if (present(overrides)) key%overrides = overrides
+        call append_key(this, key)
+    end subroutine cli_add_reals
+
+    !> Register a key taking `yes` or `no`.
+    pure subroutine cli_add_flag(this, name, default, help)
+        class(cli_t), intent(inout) :: this
+        character(len=*), intent(in) :: name, default, help
+        type(key_t) :: key
+        call new_key(key, name, key_flag, default, help)
+        key%allowed = "yes or no"
+        call append_key(this, key)
+    end subroutine cli_add_flag
+
+    !> Register a key taking a word: any non-empty text of printable characters
+    !> (a name, a directory).
+    pure subroutine cli_add_word(this, name, default, help)
+        class(cli_t), intent(inout) :: this
+        character(len=*), intent(in) :: name, default, help
+        type(key_t) :: key
+        call new_key(key, name, key_word, default, help)
+        key%allowed = "a non-empty text of printable characters"
+        call append_key(this, key)
+    end subroutine cli_add_word
+
+    pure subroutine new_key(key, name, kind, default, help, in_file)
+        type(key_t), intent(out) :: key
+        character(len=*), intent(in) :: name, default, help
+        integer, intent(in) :: kind
+        logical, intent(in), optional :: in_file
+        key%name = name
+        key%kind = kind
+        key%default = default
+        key%shown = default
+        key%help = help
+        key%overrides = ""
+        key%source = ""
+        key%text = ""
+        if (present(in_file)) key%in_file = in_file
+    end subroutine new_key
+
+    pure subroutine set_range(key, lo, hi, lo_open, hi_open)
+        type(key_t), intent(inout) :: key
+        real(qp), intent(in), optional :: lo, hi
+        logical, intent(in), optional :: lo_open, hi_open
+        key%has_lo = present(lo)
+        key%has_hi = present(hi)
+        if (present(lo)) key%lo = lo
+        if (present(hi)) key%hi = hi
+        if (present(lo_open)) key%lo_open = lo_open
+        if (present(hi_open)) key%hi_open = hi_open
+    end subroutine set_range
+
+    !> "lo <= name <= hi" and its one-sided forms, from a key's range.
+    pure function range_text(key, name) result(text)
+        type(key_t), intent(in) :: key
+        character(len=*), intent(in) :: name
+        character(len=:), allocatable :: text
+        character(len=*), parameter :: le(2) = ["<=", "< "], ge(2) = [">=", "> "]
+        if (key%has_lo .and. key%has_hi) then
+            text = short_text(key%lo)//" "//trim(le(merge(2, 1, key%lo_open)))//" "//name &
+                //" "//trim(le(merge(2, 1, key%hi_open)))//" "//short_text(key%hi)
+        else if (key%has_lo) then
+            text = name//" "//trim(ge(merge(2, 1, key%lo_open)))//" "//short_text(key%lo)
+        else if (key%has_hi) then
+            text = name//" "//trim(le(merge(2, 1, key%hi_open)))//" "//short_text(key%hi)
+        else
+            text = "a finite number"
+        end if
+    end function range_text
+
+    pure subroutine append_key(cli, key)
+        type(cli_t), intent(inout) :: cli
+        type(key_t), intent(in) :: key
+        type(key_t), allocatable :: keys(:)
+        integer :: n
+        if (.not. allocated(cli%keys)) allocate (cli%keys(0))
+        n = size(cli%keys)
+        allocate (keys(n + 1))
+        keys(:n) = cli%keys
+        keys(n + 1) = key
+        call move_alloc(keys, cli%keys)
+    end subroutine append_key
+
+    ! ------------------------------------------------------------------
+    ! the program kit: parsing
+    ! ------------------------------------------------------------------
+
+    !> Read `args` into the keys. A key may be given once; its value must be
+    !> of the key's kind and in its range; a key and the key it overrides may
+    !> not both be given; keys not given take their defaults. With `files`, a
+    !> bare argument names a scene file whose keys the command line overrides.
+    !> `--help`, `-h` or `help` only sets `help`. With `used` (one flag per
+    !> argument), keys this registry does not know are left for the caller,
+    !> their flags false, instead of being refused.
+    subroutine cli_parse(this, args, error, used)
+        class(cli_t), intent(inout) :: this
+        type(string_t), intent(in) :: args(:)
+        type(error_t), allocatable, intent(out) :: error
+        logical, intent(out), optional :: used(:)
+        integer :: i, j, k
+        character(len=:), allocatable :: file
+        if (.not. allocated(this%keys)) allocate (this%keys(0))
+        if (present(used)) used = .false.
+        do k = 1, size(this%keys)
+            call reset_value(this%keys(k))
+        end do
+        this%help = .false.
         do i = 1, size(args)
-            if (args(i) == "--help" .or. args(i) == "-h" .or. args(i) == "help") wants_help = .true.
+            if (is_help(args(i)%s)) this%help = .true.
         end do
-    end function wants_help
+        if (this%help) return
+        file = ""
+        do i = 1, size(args)
+            associate (arg => args(i)%s)
+                j = index(arg, "=")
+                if (j == 0) then
+                    if (present(used) .and. (.not. this%files .or. starts_with_dash(arg))) cycle
+                    call bare_argument(this, arg, file, error)
+                    if (allocated(error)) return
+                else
+                    k = find_key(this, arg(:j - 1))
+                    if (k == 0 .and. present(used)) cycle
+                    call take_argument(this, arg, j, k, error)
+                    if (allocated(error)) return
+                end if
+                if (present(used)) used(i) = .true.
+            end associate
+        end do
+        call check_overrides(this, error)
+        if (allocated(error)) return
+        do k = 1, size(this%keys)
+            associate (key => this%keys(k))
+                if (key%given .or. len(key%default) == 0) cycle
+                key%text = key%default
+                call read_value(key, "", error)
+                if (allocated(error)) return
+            end associate
+        end do
+    end subroutine cli_parse
 
-    !> Split `key=value`; `stat` is status_invalid if there is no `=` or no key.
-    pure subroutine split_key_value(arg, key, value, stat, msg)
+    subroutine reset_value(key)
+        type(key_t), intent(inout) :: key
+        key%given = .false.
+        key%source = ""
+        key%text = ""
+        key%n = 0
+        key%x = 0.0_qp
+        key%flag = .false.
+        if (allocated(key%xs)) deallocate (key%xs)
+    end subroutine reset_value
+
+    !> A bare argument: a scene file if the program takes one, else refused.
+    subroutine bare_argument(cli, arg, file, error)
+        type(cli_t), intent(inout) :: cli
         character(len=*), intent(in) :: arg
-        character(len=:), allocatable, intent(out) :: key, value
-        integer, intent(out) :: stat
-        character(len=*), intent(out) :: msg
-        integer :: i
-        i = index(arg, "=")
-        stat = status_invalid
-        if (i <= 1) then
-            key = ""
-            value = ""
-            msg = "argument '"//trim(arg)//"': allowed key=value (see --help)"
-            return
+        character(len=:), allocatable, intent(inout) :: file
+        type(error_t), allocatable, intent(out) :: error
+        if (starts_with_dash(arg) .or. len(arg) == 0 .or. .not. cli%files) then
+            call fatal_error(error, "argument '"//printable(arg)//"': allowed " &
+                //allowed_arguments(cli))
+        else if (len(file) > 0) then
+            call fatal_error(error, "file = "//printable(arg)//": a second scene file (the " &
+                //"first is "//printable(file)//"); allowed one scene file")
+        else
+            file = arg
+            call read_scene_file(cli, arg, error)
         end if
-        key = trim(adjustl(arg(:i - 1)))
-        value = trim(adjustl(arg(i + 1:)))
-        stat = status_normal
-        msg = ""
-    end subroutine split_key_value
+    end subroutine bare_argument
 
-    !> Read a finite real from `text`, strictly: digits, one sign per part, a
-    !> decimal point and an exponent letter only.
-    pure subroutine parse_real(key, text, x, stat, msg)
-        character(len=*), intent(in) :: key, text
-        real(qp), intent(out) :: x
-        integer, intent(out) :: stat
-        character(len=*), intent(out) :: msg
-        integer :: ios
-        x = 0.0_qp
-        stat = status_invalid
-        if (has_word(text, "nan") .or. has_word(text, "inf")) then
-            msg = key//" = "//text//": allowed a finite number"
+    !> A `key=value` argument (`=` at position j) for key number k (0: unknown).
+    subroutine take_argument(cli, arg, j, k, error)
+        type(cli_t), intent(inout) :: cli
+        character(len=*), intent(in) :: arg
+        integer, intent(in) :: j, k
+        type(error_t), allocatable, intent(out) :: error
+        character(len=:), allocatable :: name, value
+        name = arg(:j - 1)
+        value = arg(j + 1:)
+        if (j == 1) then
+            call fatal_error(error, "argument '"//printable(arg)//"': no key before '='; " &
+                //"allowed "//allowed_arguments(cli))
             return
         end if
-        if (len_trim(text) == 0 .or. verify(trim(text), "0123456789+-.eEdD") /= 0 &
-            .or. scan(text, "0123456789") == 0) then
-            msg = key//" = '"//text//"': not a number"
+        if (k == 0) then
+            call fatal_error(error, printable(name)//" = "//printable(value) &
+                //": unknown key; allowed keys: "//cli%key_list())
+            return
+        end if
+        associate (key => cli%keys(k))
+            if (key%given .and. len(key%source) == 0) then
+                call fatal_error(error, printable(name)//" = "//printable(value)//": " &
+                    //name//" is given twice (first "//name//" = "//printable(key%text) &
+                    //"); allowed each key once")
+                return
+            end if
+            key%given = .true.
+            key%source = ""
+            key%text = value
+            call read_value(key, "", error)
+        end associate
+    end subroutine take_argument
+
+    !> Refuse a key given together with a key it overrides.
+    subroutine check_overrides(cli, error)
+        type(cli_t), intent(in) :: cli
+        type(error_t), allocatable, intent(out) :: error
+        integer :: k, m
+        do k = 1, size(cli%keys)
+            associate (key => cli%keys(k))
+                if (.not. key%given .or. len(key%overrides) == 0) cycle
+                m = find_key(cli, key%overrides)
+                if (m == 0) cycle
+                if (.not. cli%keys(m)%given) cycle
+                call fatal_error(error, origin(cli%keys(m))//cli%keys(m)%name//" = " &
+                    //printable(cli%keys(m)%text)//": "//key%name//" = " &
+                    //printable(key%text)//" is given too and overrides it; allowed one of " &
+                    //cli%keys(m)%name//" and "//key%name)
+                return
+            end associate
+        end do
+    end subroutine check_overrides
+
+    !> "file 'path': " for a value from a scene file, "" for the command line.
+    pure function origin(key) result(text)
+        type(key_t), intent(in) :: key
+        character(len=:), allocatable :: text
+        text = ""
+        if (len(key%source) > 0) text = "file '"//printable(key%source)//"': "
+    end function origin
+
+    !> Read key%text as the key's value and check its range; `where` prefixes
+    !> the message (the scene file a value came from).
+    subroutine read_value(key, where, error)
+        type(key_t), intent(inout) :: key
+        character(len=*), intent(in) :: where
+        type(error_t), allocatable, intent(out) :: error
+        integer :: i
+        select case (key%kind)
+        case (key_int)
+            call read_int(key%name, key%text, key%n, error, key%allowed)
+            if (allocated(error)) then
+                error%message = where//error%message
+                return
+            end if
+            if (key%n < key%ilo .or. key%n > key%ihi) then
+                call fatal_error(error, where//key%name//" = "//printable(key%text) &
+                    //": allowed "//key%allowed)
+                return
+            end if
+        case (key_real)
+            call read_real(key%name, key%text, key%x, error, key%allowed)
+            if (allocated(error)) then
+                error%message = where//error%message
+                return
+            end if
+            if (.not. in_range(key, key%x)) then
+                call fatal_error(error, where//key%name//" = "//printable(key%text) &
+                    //": allowed "//key%allowed)
+                return
+            end if
+        case (key_reals)
+            call read_reals(key%name, key%text, key%xs, error, key%allowed)
+            if (allocated(error)) then
+                error%message = where//error%message
+                return
+            end if
+            do i = 1, size(key%xs)
+                if (in_range(key, key%xs(i))) cycle
+                call fatal_error(error, where//key%name//" = "//printable(key%text) &
+                    //": value "//itoa(i)//" is "//short_text(key%xs(i))//"; allowed " &
+                    //key%allowed)
+                return
+            end do
+        case (key_flag)
+            select case (key%text)
+            case ("yes")
+                key%flag = .true.
+            case ("no")
+                key%flag = .false.
+            case default
+                call fatal_error(error, where//key%name//" = "//printable(key%text) &
+                    //": allowed yes or no")
+                return
+            end select
+        case default
+            ! a word: any non-empty printable text
+            if (len(key%text) == 0 .or. has_control(key%text)) then
+                call fatal_error(error, where//key%name//" = "//printable(key%text) &
+                    //": allowed "//key%allowed)
+                return
+            end if
+        end select
+    end subroutine read_value
+
+    pure logical function in_range(key, x)
+        type(key_t), intent(in) :: key
+        real(qp), intent(in) :: x
+        in_range = .true.
+        if (key%has_lo) then
+            if (key%lo_open) then
+                in_range = x > key%lo
+            else
+                in_range = x >= key%lo
+            end if
+        end if
+        if (key%has_hi .and. in_range) then
+            if (key%hi_open) then
+                in_range = x < key%hi
+            else
+                in_range = x <= key%hi
+            end if
+        end if
+    end function in_range
+
+    !> What a command line may hold, for messages about a stray argument.
+    function allowed_arguments(cli) result(text)
+        type(cli_t), intent(in) :: cli
+        character(len=:), allocatable :: text
+        text = "key=value with keys "//cli%key_list()
+        if (cli%files) text = text//", one scene file"
+        text = text//", or --help"
+    end function allowed_arguments
+
+    pure logical function is_help(arg)
+        character(len=*), intent(in) :: arg
+        is_help = arg == "--help" .or. arg == "-h" .or. arg == "help"
+    end function is_help
+
+    pure logical function starts_with_dash(arg)
+        character(len=*), intent(in) :: arg
+        starts_with_dash = .false.
+        if (len(arg) > 0) starts_with_dash = arg(1:1) == "-"
+    end function starts_with_dash
+
+    !> Index of the key called `name` (exactly), 0 if none.
+    pure integer function find_key(cli, name)
+        type(cli_t), intent(in) :: cli
+        character(len=*), intent(in) :: name
+        integer :: k
+        find_key = 0
+        if (.not. allocated(cli%keys)) return
+        do k = 1, size(cli%keys)
+            if (cli%keys(k)%name == name .and. len(cli%keys(k)%name) == len(name)) then
+                find_key = k
+                return
+            end if
+        end do
+    end function find_key
+
+    ! ------------------------------------------------------------------
+    ! the program kit: scene files
+    ! ------------------------------------------------------------------
+
+    !> Read a scene file: one namelist group `&scene ... /` holding whole keys
+    !> (`name = value`, lists as `name = v1, v2, ...`), `!` comments. Every
+    !> value passes the same checks as on the command line; what Fortran's
+    !> namelist input would also take (elements `masses(2) = 1`, repeat
+    !> counts `3*1`, null values `1,,2`, list-directed numbers like `1-5`) is
+    !> refused. A key given on the command line too keeps that value.
+    subroutine read_scene_file(cli, path, error)
+        type(cli_t), intent(inout) :: cli
+        character(len=*), intent(in) :: path
+        type(error_t), allocatable, intent(out) :: error
+        character(len=:), allocatable :: text, body, where
+        integer :: first, last, finish
+        where = "file '"//printable(path)//"': "
+        call read_text(path, text, error)
+        if (allocated(error)) return
+        first = verify(text, " ")
+        if (first == 0) then
+            call fatal_error(error, where//"empty (or not a file); allowed a namelist group " &
+                //"&scene ... /")
+            return
+        end if
+        last = scan(text(first:), " ") + first - 1
+        if (last < first) last = len(text) + 1
+        if (lower(text(first:last - 1)) /= "&scene") then
+            call fatal_error(error, where//"begins with '"//printable(text(first:last - 1)) &
+                //"'; allowed a namelist group &scene ... /")
+            return
+        end if
+        finish = index(text(last:), "/")
+        if (finish == 0) then
+            call fatal_error(error, where//"no '/' ends the group &scene; allowed " &
+                //"&scene key = value, ... /")
+            return
+        end if
+        finish = finish + last - 1
+        if (verify(text(finish + 1:), " ") /= 0) then
+            call fatal_error(error, where//"text after the '/' that ends &scene: '" &
+                //printable(trim(adjustl(text(finish + 1:))))//"'; allowed only comments")
+            return
+        end if
+        body = text(last:finish - 1)
+        call read_group(cli, path, where, body, error)
+    end subroutine read_scene_file
+
+    !> The items `name = values` of a group's body.
+    subroutine read_group(cli, path, where, body, error)
+        type(cli_t), intent(inout) :: cli
+        character(len=*), intent(in) :: path, where, body
+        type(error_t), allocatable, intent(out) :: error
+        integer :: eq, next_eq, name_start, next_name, value_end, pos
+        character(len=:), allocatable :: name
+        logical, allocatable :: seen(:)
+        allocate (seen(size(cli%keys)), source=.false.)
+        eq = index(body, "=")
+        if (eq == 0) then
+            if (verify(body, " ,") /= 0) call fatal_error(error, where//"'" &
+                //printable(trim(adjustl(body)))//"' in &scene; allowed key = value items")
+            return
+        end if
+        call name_before(body, eq, name_start)
+        if (verify(body(:name_start - 1), " ") /= 0) then
+            call fatal_error(error, where//"'"//printable(trim(adjustl(body(:name_start - 1)))) &
+                //"' before the first key; allowed key = value items")
+            return
+        end if
+        pos = eq
+        do
+            name = lower(trim(adjustl(body(name_start:pos - 1))))
+            next_eq = index(body(pos + 1:), "=")
+            if (next_eq == 0) then
+                value_end = len(body)
+                next_name = 0
+            else
+                next_eq = next_eq + pos
+                call name_before(body, next_eq, next_name)
+                value_end = next_name - 1
+            end if
+            call file_item(cli, path, where, name, body(pos + 1:value_end), seen, error)
+            if (allocated(error)) return
+            if (next_eq == 0) exit
+            name_start = next_name
+            pos = next_eq
+        end do
+    end subroutine read_group
+
+    !> Start of the name that ends just before the `=` at position eq.
+    pure subroutine name_before(body, eq, start)
+        character(len=*), intent(in) :: body
+        integer, intent(in) :: eq
+        integer, intent(out) :: start
+        integer :: i
+        i = eq - 1
+        do while (i >= 1)
+            if (body(i:i) /= " ") exit
+            i = i - 1
+        end do
+        do while (i >= 1)
+            if (body(i:i) == " " .or. body(i:i) == ",") exit
+            i = i - 1
+        end do
+        start = i + 1
+    end subroutine name_before
+
+    !> One item of a scene file: the key `name`, its values as written.
+    subroutine file_item(cli, path, where, name, values, seen, error)
+        type(cli_t), intent(inout) :: cli
+        character(len=*), intent(in) :: path, where, name, values
+        logical, intent(inout) :: seen(:)
+        type(error_t), allocatable, intent(out) :: error
+        character(len=:), allocatable :: text, shown
+        type(key_t) :: scratch
+        integer :: k, count
+        logical :: null
+        shown = printable(trim(adjustl(values)))
+        if (len(name) == 0) then
+            call fatal_error(error, where//"'= "//shown//"' without a key; allowed " &
+                //"key = value items")
+            return
+        end if
+        if (verify(name, "abcdefghijklmnopqrstuvwxyz0123456789_") /= 0) then
+            call fatal_error(error, where//printable(name)//" = "//shown//": not a key name " &
+                //"(single elements and components cannot be set); allowed whole keys: " &
+                //file_keys(cli))
+            return
+        end if
+        k = find_key(cli, name)
+        if (k > 0) then
+            if (.not. cli%keys(k)%in_file) k = 0
+        end if
+        if (k == 0) then
+            call fatal_error(error, where//name//" = "//shown//": unknown key; allowed in a " &
+                //"file: "//file_keys(cli))
+            return
+        end if
+        if (seen(k)) then
+            call fatal_error(error, where//name//" = "//shown//": "//name//" is given twice " &
+                //"in the file; allowed each key once")
+            return
+        end if
+        seen(k) = .true.
+        call join_values(values, text, count, null)
+        if (null .or. count == 0) then
+            call fatal_error(error, where//name//" = "//shown//": an empty value; allowed " &
+                //cli%keys(k)%allowed)
+            return
+        end if
+        if (count > 1 .and. cli%keys(k)%kind /= key_reals) then
+            call fatal_error(error, where//name//" = "//shown//": "//itoa(count) &
+                //" values; allowed one value, "//cli%keys(k)%allowed)
+            return
+        end if
+        if (cli%keys(k)%given) then
+            ! the command line overrides the file; the file's value must still be valid
+            scratch = cli%keys(k)
+            scratch%text = text
+            call read_value(scratch, where, error)
+            return
+        end if
+        associate (key => cli%keys(k))
+            key%given = .true.
+            key%source = path
+            key%text = text
+            call read_value(key, where, error)
+        end associate
+    end subroutine file_item
+
+    !> The values of an item, separated by commas or blanks, joined by commas;
+    !> `null` if two commas have no value between them (one trailing comma
+    !> separates items and is allowed).
+    pure subroutine join_values(values, text, count, null)
+        character(len=*), intent(in) :: values
+        character(len=:), allocatable, intent(out) :: text
+        integer, intent(out) :: count
+        logical, intent(out) :: null
+        integer :: i, start
+        logical :: after_comma
+        text = ""
+        count = 0
+        null = .false.
+        after_comma = .true.
+        i = 1
+        do while (i <= len(values))
+            if (values(i:i) == ",") then
+                if (after_comma) null = .true.
+                after_comma = .true.
+                i = i + 1
+            else if (values(i:i) == " ") then
+                i = i + 1
+            else
+                start = i
+                do while (i <= len(values))
+                    if (values(i:i) == "," .or. values(i:i) == " ") exit
+                    i = i + 1
+                end do
+                if (count > 0) text = text//","
+                text = text//values(start:i - 1)
+                count = count + 1
+                after_comma = .false.
+            end if
+        end do
+    end subroutine join_values
+
+    !> Names of the keys a scene file may set.
+    pure function file_keys(cli) result(text)
+        type(cli_t), intent(in) :: cli
+        character(len=:), allocatable :: text
+        integer :: k
+        text = ""
+        do k = 1, size(cli%keys)
+            if (.not. cli%keys(k)%in_file) cycle
+            if (len(text) > 0) text = text//", "
+            text = text//cli%keys(k)%name
+        end do
+    end function file_keys
+
+    !> The whole file as one line: line ends, tabs and carriage returns become
+    !> blanks, `!` comments are dropped.
+    subroutine read_text(path, text, error)
+        character(len=*), intent(in) :: path
+        character(len=:), allocatable, intent(out) :: text
+        type(error_t), allocatable, intent(out) :: error
+        character(len=1024) :: buffer
+        character(len=512) :: iomsg
+        character(len=:), allocatable :: line
+        integer :: unit, ios, n, bang, i
+        text = ""
+        open (newunit=unit, file=path, status="old", action="read", form="formatted", &
+            access="sequential", iostat=ios, iomsg=iomsg)
+        if (ios /= 0) then
+            call fatal_error(error, "file = "//printable(path)//": cannot be opened (" &
+                //trim(iomsg)//"); allowed a readable scene file", error_io)
+            return
+        end if
+        line = ""
+        do
+            read (unit, "(a)", advance="no", iostat=ios, iomsg=iomsg, size=n) buffer
+            if (ios == 0) then
+                line = line//buffer(:n)
+                cycle
+            end if
+            if (ios == iostat_eor .or. (ios == iostat_end .and. len(line) + n > 0)) then
+                line = line//buffer(:n)
+                bang = index(line, "!")
+                if (bang > 0) line = line(:bang - 1)
+                text = text//line//" "
+                line = ""
+                if (ios == iostat_eor) cycle
+                exit
+            end if
+            if (ios == iostat_end) exit
+            call fatal_error(error, "file = "//printable(path)//": cannot be read (" &
+                //trim(iomsg)//"); allowed a readable text file", error_io)
+            close (unit)
+            return
+        end do
+        close (unit)
+        do i = 1, len(text)
+            if (text(i:i) == achar(9) .or. text(i:i) == achar(13)) text(i:i) = " "
+        end do
+    end subroutine read_text
+
+    ! ------------------------------------------------------------------
+    ! the program kit: values, help, failure
+    ! ------------------------------------------------------------------
+
+    !> Index of a registered key; a name the program never registered is a
+    !> mistake in the program, not in its input.
+    integer function key_index(cli, name)
+        type(cli_t), intent(in) :: cli
+        character(len=*), intent(in) :: name
+        key_index = find_key(cli, name)
+        if (key_index == 0) error stop "sphere_row_args: no key registered as '"//name//"'"
+    end function key_index
+
+    logical function cli_given(this, name)
+        class(cli_t), intent(in) :: this
+        character(len=*), intent(in) :: name
+        cli_given = this%keys(key_index(this, name))%given
+    end function cli_given
+
+    integer function cli_get_int(this, name)
+        class(cli_t), intent(in) :: this
+        character(len=*), intent(in) :: name
+        cli_get_int = this%keys(key_index(this, name))%n
+    end function cli_get_int
+
+    real(qp) function cli_get_real(this, name)
+        class(cli_t), intent(in) :: this
+        character(len=*), intent(in) :: name
+        cli_get_real = this%keys(key_index(this, name))%x
+    end function cli_get_real
+
+    function cli_get_reals(this, name) result(xs)
+        class(cli_t), intent(in) :: this
+        character(len=*), intent(in) :: name
+        real(qp), allocatable :: xs(:)
+        integer :: k
+        k = key_index(this, name)
+        if (allocated(this%keys(k)%xs)) then
+            xs = this%keys(k)%xs
+        else
+            allocate (xs(0))
+        end if
+    end function cli_get_reals
+
+    logical function cli_get_flag(this, name)
+        class(cli_t), intent(in) :: this
+        character(len=*), intent(in) :: name
+        cli_get_flag = this%keys(key_index(this, name))%flag
+    end function cli_get_flag
+
+    function cli_get_word(this, name) result(word)
+        class(cli_t), intent(in) :: this
+        character(len=*), intent(in) :: name
+        character(len=:), allocatable :: word
+        word = this%keys(key_index(this, name))%text
+    end function cli_get_word
+
+    function cli_get_text(this, name) result(text)
+        class(cli_t), intent(in) :: this
+        character(len=*), intent(in) :: name
+        character(len=:), allocatable :: text
+        text = this%keys(key_index(this, name))%text
+    end function cli_get_text
+
+    function cli_key_list(this) result(text)
+        class(cli_t), intent(in) :: this
+        character(len=:), allocatable :: text
+        integer :: k
+        text = ""
+        do k = 1, size(this%keys)
+            if (k > 1) text = text//", "
+            text = text//this%keys(k)%name
+        end do
+    end function cli_key_list
+
+    !> The text of `--help`: synopsis, the program's paragraph, every key with
+    !> its default, help line and what is allowed, and the input rules.
+    function cli_usage(this) result(text)
+        class(cli_t), intent(in) :: this
+        character(len=:), allocatable :: text
+        text = "usage: "//this%name//" "//this%synopsis//nl
+        if (allocated(this%about)) text = text//nl//this%about//nl
+        text = text//nl//"Keys (key=default):"//nl//key_lines(this)//nl//input_rules(this)
+    end function cli_usage
+
+    !> Two lines per key: `key=default  help`, then what is allowed.
+    pure function key_lines(cli) result(text)
+        type(cli_t), intent(in) :: cli
+        character(len=:), allocatable :: text
+        character(len=:), allocatable :: head
+        integer :: k
+        text = ""
+        do k = 1, size(cli%keys)
+            associate (key => cli%keys(k))
+                head = "  "//key%name//"="//key%shown
+                if (len(head) < help_column - 1) then
+                    head = head//repeat(" ", help_column - 1 - len(head))
+                else
+                    head = head//nl//repeat(" ", help_column - 1)
+                end if
+                text = text//head//key%help//nl//repeat(" ", help_column - 1)//"allowed " &
+                    //key%allowed
+                text = text//nl
+            end associate
+        end do
+        if (cli%files) text = text//"  FILE"//repeat(" ", help_column - 7) &
+            //"a scene file: a namelist group &scene key = value, ... /"//nl &
+            //repeat(" ", help_column - 1)//"of the keys "//file_keys(cli)//";"//nl &
+            //repeat(" ", help_column - 1)//"keys on the command line override the file's"//nl
+    end function key_lines
+
+    function input_rules(cli) result(text)
+        type(cli_t), intent(in) :: cli
+        character(len=:), allocatable :: text
+        text = "Input: each key at most once, as key=value with nothing around the value;" &
+            //nl//"numbers in full: an optional sign, digits with an optional '.', an optional" &
+            //nl//"exponent e, E, d or D with optional sign and digits (0.25, -3, 1e-5, 2.5d3);" &
+            //nl//"integers: an optional sign and digits; lists: comma-separated numbers." &
+            //nl//"Bad input: one line on stderr ("//cli%name//": key = value: allowed ...)," &
+            //nl//"exit status 2, nothing on stdout."
+    end function input_rules
+
+    !> All command-line arguments, each with its own length.
+    subroutine command_args(args)
+        type(string_t), allocatable, intent(out) :: args(:)
+        integer :: i, length
+        allocate (args(command_argument_count()))
+        do i = 1, size(args)
+            call get_command_argument(i, length=length)
+            allocate (character(len=length) :: args(i)%s)
+            if (length > 0) call get_command_argument(i, args(i)%s)
+        end do
+    end subroutine command_args
+
+    !> For programs: read the command line into `cli`; on `--help` print the
+    !> usage on stdout and stop; on bad input `fail`.
+    subroutine read_command_line(cli)
+        type(cli_t), intent(inout) :: cli
+        type(string_t), allocatable :: args(:)
+        type(error_t), allocatable :: error
+        call command_args(args)
+        call cli%parse(args, error)
+        if (cli%help) then
+            write (output_unit, "(a)", advance="no") cli%usage()
+            stop
+        end if
+        if (allocated(error)) call fail(cli%name, error)
+    end subroutine read_command_line
+
+    !> For programs: print `name: message` as one line on stderr (control
+    !> characters shown escaped) and stop with exit status 2.
+    subroutine fail(name, error)
+        character(len=*), intent(in) :: name
+        type(error_t), intent(in) :: error
+        write (error_unit, "(a)") name//": "//printable(error%message)
+        stop 2, quiet=.true.
+    end subroutine fail
+
+    ! ------------------------------------------------------------------
+    ! strict readers of numbers
+    ! ------------------------------------------------------------------
+
+    !> True if the whole of `text` is a real number in Fortran or C syntax: an
+    !> optional sign, digits with an optional '.' (at least one digit), and an
+    !> optional exponent: e, E, d or D, an optional sign and digits.
+    pure logical function is_real_text(text)
+        character(len=*), intent(in) :: text
+        integer :: i, n, digits
+        is_real_text = .false.
+        n = len(text)
+        i = 1
+        if (n == 0) return
+        if (text(1:1) == "+" .or. text(1:1) == "-") i = 2
+        digits = 0
+        do while (i <= n)
+            if (.not. is_digit(text(i:i))) exit
+            digits = digits + 1
+            i = i + 1
+        end do
+        if (i <= n) then
+            if (text(i:i) == ".") then
+                i = i + 1
+                do while (i <= n)
+                    if (.not. is_digit(text(i:i))) exit
+                    digits = digits + 1
+                    i = i + 1
+                end do
+            end if
+        end if
+        if (digits == 0) return
+        if (i <= n) then
+            if (scan(text(i:i), "eEdD") == 0) return
+            i = i + 1
+            if (i <= n) then
+                if (text(i:i) == "+" .or. text(i:i) == "-") i = i + 1
+            end if
+            if (i > n) return
+            do while (i <= n)
+                if (.not. is_digit(text(i:i))) return
+                i = i + 1
+            end do
+        end if
+        is_real_text = .true.
+    end function is_real_text
+
+    !> True if the whole of `text` is an optional sign and digits.
+    pure logical function is_int_text(text)
+        character(len=*), intent(in) :: text
+        integer :: start
+        is_int_text = .false.
+        if (len(text) == 0) return
+        start = 1
+        if (text(1:1) == "+" .or. text(1:1) == "-") start = 2
+        if (start > len(text)) return
+        is_int_text = verify(text(start:), "0123456789") == 0
+    end function is_int_text
+
+    pure logical function is_digit(c)
+        character, intent(in) :: c
+        is_digit = c >= "0" .and. c <= "9"
+    end function is_digit
+
+    !> Read `text` as the real value of key `name` in real(16), strictly (see
+    !> is_real_text). Refused: anything else, a value beyond the largest
+    !> real(16) (it would be inf) and a non-zero value that rounds to 0.
+    !> `allowed` ends the message (default: a finite number).
+    pure subroutine read_real(name, text, x, error, allowed)
+        character(len=*), intent(in) :: name, text
+        real(qp), intent(out) :: x
+        type(error_t), allocatable, intent(out) :: error
+        character(len=*), intent(in), optional :: allowed
+        character(len=:), allocatable :: what
+        integer :: ios
+        what = "a finite number"
+        if (present(allowed)) what = allowed
+        x = 0.0_qp
+        if (len(text) == 0) then
+            call fatal_error(error, name//" = : no value; allowed "//what)
+            return
+        else if (.not. is_real_text(text)) then
+            call fatal_error(error, name//" = "//printable(text)//": not a number; allowed " &
+                //what//", written as "//number_rule)
             return
         end if
         read (text, *, iostat=ios) x
         if (ios /= 0) then
-            msg = key//" = '"//text//"': not a number"
-            return
+            call fatal_error(error, name//" = "//printable(text)//": not a number; allowed " &
+                //what//", written as "//number_rule)
+        else if (.not. (abs(x) <= huge(x))) then
+            call fatal_error(error, name//" = "//text//": beyond the largest real(16) number " &
+                //short_text(huge(x), 3, "down")//"; allowed "//what)
+        else if (x == 0.0_qp .and. scan(mantissa(text), "123456789") > 0) then
+            call fatal_error(error, name//" = "//text//": too small for real(16), it would " &
+                //"read as 0; allowed "//what)
         end if
-        if (.not. (abs(x) <= huge(x))) then
-            msg = key//" = "//text//": allowed a finite number"
-            return
-        end if
-        stat = status_normal
-        msg = ""
-    end subroutine parse_real
+    end subroutine read_real
 
-    !> Read an integer from `text`: an optional sign and digits only.
-    pure subroutine parse_int(key, text, n, stat, msg)
-        character(len=*), intent(in) :: key, text
+    !> The part of a number before its exponent letter.
+    pure function mantissa(text) result(m)
+        character(len=*), intent(in) :: text
+        character(len=:), allocatable :: m
+        integer :: i
+        i = scan(text, "eEdD")
+        if (i == 0) then
+            m = text
+        else
+            m = text(:i - 1)
+        end if
+    end function mantissa
+
+    !> Read `text` as the integer value of key `name`: an optional sign and
+    !> digits, within the range of the default integer.
+    pure subroutine read_int(name, text, n, error, allowed)
+        character(len=*), intent(in) :: name, text
         integer, intent(out) :: n
-        integer, intent(out) :: stat
-        character(len=*), intent(out) :: msg
-        integer :: ios, start
+        type(error_t), allocatable, intent(out) :: error
+        character(len=*), intent(in), optional :: allowed
+        character(len=:), allocatable :: what, digits
+        integer(int64) :: wide
+        integer :: ios, first
+        what = "an integer"
+        if (present(allowed)) what = allowed
         n = 0
-        stat = status_invalid
-        start = 1
-        if (len_trim(text) > 0) then
-            if (text(1:1) == "+" .or. text(1:1) == "-") start = 2
-        end if
-        if (len_trim(text) < start .or. verify(trim(text(start:)), "0123456789") /= 0 &
-            .or. len_trim(text) > 10) then
-            msg = key//" = '"//text//"': allowed an integer"
+        if (len(text) == 0) then
+            call fatal_error(error, name//" = : no value; allowed "//what)
+            return
+        else if (.not. is_int_text(text)) then
+            call fatal_error(error, name//" = "//printable(text)//": not an integer; allowed " &
+                //what//", written as an optional sign and digits")
             return
         end if
-        read (text, *, iostat=ios) n
-        if (ios /= 0) then
-            msg = key//" = '"//text//"': allowed an integer"
+        first = verify(text, "+-0")
+        if (first == 0) return
+        digits = text(first:)
+        if (len(digits) > 18) then
+            wide = huge(wide)
+        else
+            read (text, *, iostat=ios) wide
+            if (ios /= 0) wide = huge(wide)
+        end if
+        if (abs(wide) > huge(n)) then
+            call fatal_error(error, name//" = "//text//": beyond the largest integer " &
+                //itoa(huge(n))//"; allowed "//what)
             return
         end if
-        stat = status_normal
-        msg = ""
-    end subroutine parse_int
+        n = int(wide)
+    end subroutine read_int
 
-    !> Read a comma-separated list of finite reals.
-    pure subroutine parse_reals(key, text, xs, stat, msg)
-        character(len=*), intent(in) :: key, text
+    !> Read a comma-separated list of reals, each as read_real reads one;
+    !> an empty entry is refused.
+    pure subroutine read_reals(name, text, xs, error, allowed)
+        character(len=*), intent(in) :: name, text
         real(qp), allocatable, intent(out) :: xs(:)
-        integer, intent(out) :: stat
-        character(len=*), intent(out) :: msg
+        type(error_t), allocatable, intent(out) :: error
+        character(len=*), intent(in), optional :: allowed
+        character(len=:), allocatable :: what
         integer :: i, j, n, start
+        what = "comma-separated numbers"
+        if (present(allowed)) what = allowed
         n = 1
-        do i = 1, len_trim(text)
+        do i = 1, len(text)
             if (text(i:i) == ",") n = n + 1
         end do
         allocate (xs(n))
@@ -141,338 +1154,306 @@ contains
         do j = 1, n
             i = index(text(start:), ",")
             if (i == 0) then
-                i = len_trim(text) + 1
+                i = len(text) + 1
             else
                 i = start + i - 1
             end if
-            call parse_real(key, trim(adjustl(text(start:i - 1))), xs(j), stat, msg)
-            if (stat /= status_normal) then
-                msg = key//" = "//text//": entry "//itoa(j)//" is not a finite number"
+            call read_real(name, text(start:i - 1), xs(j), error)
+            if (allocated(error)) then
+                if (i == start) then
+                    error%message = name//" = "//printable(text)//": value "//itoa(j) &
+                        //" is empty; allowed "//what
+                else
+                    error%message = name//" = "//printable(text)//": value "//itoa(j) &
+                        //" = "//printable(text(start:i - 1)) &
+                        //after_colon(error%message, name//" = "//printable(text(start:i - 1))) &
+                        //"; allowed "//what
+                end if
                 return
             end if
             start = i + 1
         end do
-    end subroutine parse_reals
+    end subroutine read_reals
 
-    !> Read `yes` or `no`.
-    pure subroutine parse_flag(key, text, flag, stat, msg)
-        character(len=*), intent(in) :: key, text
-        logical, intent(out) :: flag
-        integer, intent(out) :: stat
-        character(len=*), intent(out) :: msg
-        stat = status_normal
-        msg = ""
-        select case (text)
-        case ("yes")
-            flag = .true.
-        case ("no")
-            flag = .false.
-        case default
-            flag = .false.
-            stat = status_invalid
-            msg = key//" = '"//text//"': allowed yes or no"
-        end select
-    end subroutine parse_flag
+    !> The reason in a message `head: reason; allowed ...`, as ": reason".
+    pure function after_colon(message, head) result(reason)
+        character(len=*), intent(in) :: message, head
+        character(len=:), allocatable :: reason
+        integer :: stop_at
+        reason = message(len(head) + 1:)
+        stop_at = index(reason, "; allowed")
+        if (stop_at > 0) reason = reason(:stop_at - 1)
+    end function after_colon
 
-    !> Build a scene from the scene keys among `args` (and from a namelist file
-    !> if one argument has no `=`); `used(i)` tells which arguments were taken.
-    !> Arguments that are not scene keys are left for the caller, who must refuse
-    !> any it does not know (see unused_arg). `e` overrides the default e of
-    !> the definition's scene when given.
-    subroutine scene_from_args(args, scene, used, stat, msg, e_default)
-        character(len=*), intent(in) :: args(:)
-        type(scene_t), intent(out) :: scene
-        logical, intent(out) :: used(:)
-        integer, intent(out) :: stat
-        character(len=*), intent(out) :: msg
+    !> `text` with every control character shown escaped (\n, \t, \r, \xHH),
+    !> so that a message stays one line.
+    pure function printable(text) result(shown)
+        character(len=*), intent(in) :: text
+        character(len=:), allocatable :: shown
+        character(len=*), parameter :: hex = "0123456789abcdef"
+        integer :: i, c
+        shown = ""
+        do i = 1, len(text)
+            c = iachar(text(i:i))
+            select case (c)
+            case (10)
+                shown = shown//"\n"
+            case (9)
+                shown = shown//"\t"
+            case (13)
+                shown = shown//"\r"
+            case (0:8, 11:12, 14:31, 127)
+                shown = shown//"\x"//hex(c/16 + 1:c/16 + 1)//hex(mod(c, 16) + 1:mod(c, 16) + 1)
+            case default
+                shown = shown//text(i:i)
+            end select
+        end do
+    end function printable
+
+    pure logical function has_control(text)
+        character(len=*), intent(in) :: text
+        integer :: i
+        has_control = .false.
+        do i = 1, len(text)
+            if (iachar(text(i:i)) < 32 .or. iachar(text(i:i)) == 127) has_control = .true.
+        end do
+    end function has_control
+
+    !> The shortest text (at most `digits` significant digits, default as many
+    !> as needed) that reads back as `x`: 0.2, 1, 1000000, 1.93e-34. A bound
+    !> cut to a few digits is rounded `toward` "down" or "up" if asked, so that
+    !> the text is still on the allowed side.
+    pure function short_text(x, digits, toward) result(text)
+        real(qp), intent(in) :: x
+        integer, intent(in), optional :: digits
+        character(len=*), intent(in), optional :: toward
+        character(len=:), allocatable :: text
+        character(len=80) :: buffer, form
+        character(len=3) :: mode
+        real(qp) :: y
+        integer :: d, most, ios
+        logical :: plain
+        most = 37
+        if (present(digits)) most = digits
+        mode = ""
+        if (present(toward)) then
+            if (toward == "down") mode = "rd,"
+            if (toward == "up") mode = "ru,"
+        end if
+        plain = x == 0.0_qp .or. (abs(x) >= 1.0e-3_qp .and. abs(x) < 1.0e7_qp)
+        do d = 1, most
+            if (plain) then
+                write (form, "('(', a, 'f0.', i0, ')')") trim(mode), d
+            else
+                write (form, "('(', a, 'es60.', i0, 'e5)')") trim(mode), d - 1
+            end if
+            write (buffer, form) x
+            read (buffer, *, iostat=ios) y
+            if (ios == 0 .and. y == x) exit
+        end do
+        text = tidy_number(trim(adjustl(buffer)))
+    end function short_text
+
+    !> Tidy a number written by short_text: no trailing zeros or '.' in the
+    !> mantissa, a leading 0 before '.', a lower-case exponent without '+'
+    !> and leading zeros: "1.00" -> "1", ".5" -> "0.5", "1.9E-0034" -> "1.9e-34".
+    pure function tidy_number(text) result(tidy)
+        character(len=*), intent(in) :: text
+        character(len=:), allocatable :: tidy
+        character(len=:), allocatable :: m, exponent, sign
+        integer :: e
+        e = scan(text, "eEdD")
+        if (e == 0) then
+            m = text
+            exponent = ""
+        else
+            m = text(:e - 1)
+            exponent = text(e + 1:)
+        end if
+        if (index(m, ".") > 0) then
+            do while (len(m) > 1)
+                if (m(len(m):len(m)) /= "0") exit
+                m = m(:len(m) - 1)
+            end do
+            if (m(len(m):len(m)) == ".") m = m(:len(m) - 1)
+        end if
+        if (len(m) == 0) m = "0"
+        if (m(1:1) == ".") m = "0"//m
+        if (len(m) > 1) then
+            if (m(1:2) == "-.") m = "-0"//m(2:)
+        end if
+        if (len(exponent) > 0) then
+            sign = ""
+            if (exponent(1:1) == "-") sign = "-"
+            exponent = exponent(verify(exponent, "+-0"):)
+            tidy = m//"e"//sign//exponent
+        else
+            tidy = m
+        end if
+    end function tidy_number
+
+    pure function lower(text) result(low)
+        character(len=*), intent(in) :: text
+        character(len=len(text)) :: low
+        integer :: i
+        low = text
+        do i = 1, len(text)
+            if (low(i:i) >= "A" .and. low(i:i) <= "Z") low(i:i) = achar(iachar(low(i:i)) + 32)
+        end do
+    end function lower
+
+    ! ------------------------------------------------------------------
+    ! the scene keys
+    ! ------------------------------------------------------------------
+
+    !> Register the keys of a scene: p, e, d, a, gaps, v0, masses, tol,
+    !> max_collisions, and scene files. Their defaults are the definition's
+    !> scene (those of scene_t, and a = 1); `e_default` replaces its e. A
+    !> program that sets e itself names what sets it in `e_set_by`: the key e
+    !> is then not registered (so refused) and its `--help` says why.
+    pure subroutine add_scene_keys(cli, e_default, e_set_by)
+        type(cli_t), intent(inout) :: cli
         real(qp), intent(in), optional :: e_default
+        character(len=*), intent(in), optional :: e_set_by
         type(scene_t) :: defaults
-        integer :: i, p, max_collisions, n_masses, n_gaps
-        real(qp) :: e, d, a, v0, tol
-        real(qp), allocatable :: masses(:), gaps(:), list(:)
-        character(len=:), allocatable :: key, value
-        logical :: have_masses, have_gaps
-
-        p = defaults%p
+        real(qp) :: e
         e = defaults%e
         if (present(e_default)) e = e_default
-        d = defaults%d
-        a = 1.0_qp
-        v0 = defaults%v0
-        tol = defaults%tol
-        max_collisions = defaults%max_collisions
-        have_masses = .false.
-        have_gaps = .false.
-        used = .false.
-        stat = status_normal
-        msg = ""
-
-        do i = 1, size(args)
-            if (index(args(i), "=") == 0 .and. args(i)(1:1) /= "-") then
-                call read_namelist(trim(args(i)))
-                if (stat /= status_normal) return
-                used(i) = .true.
-            end if
-        end do
-
-        do i = 1, size(args)
-            if (used(i) .or. index(args(i), "=") == 0) cycle
-            call split_key_value(args(i), key, value, stat, msg)
-            if (stat /= status_normal) return
-            used(i) = .true.
-            select case (key)
-            case ("p")
-                call parse_int(key, value, p, stat, msg)
-            case ("e")
-                call parse_real(key, value, e, stat, msg)
-            case ("d")
-                call parse_real(key, value, d, stat, msg)
-            case ("a")
-                call parse_real(key, value, a, stat, msg)
-            case ("v0")
-                call parse_real(key, value, v0, stat, msg)
-            case ("tol")
-                call parse_real(key, value, tol, stat, msg)
-            case ("max_collisions")
-                call parse_int(key, value, max_collisions, stat, msg)
-            case ("masses")
-                call parse_reals(key, value, list, stat, msg)
-                if (stat == status_normal) call move_alloc(list, masses)
-                have_masses = .true.
-            case ("gaps")
-                call parse_reals(key, value, list, stat, msg)
-                if (stat == status_normal) call move_alloc(list, gaps)
-                have_gaps = .true.
-            case default
-                used(i) = .false.
-            end select
-            if (stat /= status_normal) return
-        end do
-
-        if (.not. have_gaps .and. .not. (a >= 0.0_qp)) then
-            stat = status_invalid
-            msg = "a = "//trim(adjustl(rstr(a)))//": allowed a >= 0"
-            return
-        end if
-        if (have_masses .and. have_gaps) then
-            call scene_init(scene, stat, msg, p=p, e=e, d=d, v0=v0, tol=tol, &
-                max_collisions=max_collisions, masses=masses, gaps=gaps)
-        else if (have_masses) then
-            call scene_init(scene, stat, msg, p=p, e=e, d=d, a=a, v0=v0, tol=tol, &
-                max_collisions=max_collisions, masses=masses)
-        else if (have_gaps) then
-            call scene_init(scene, stat, msg, p=p, e=e, d=d, v0=v0, tol=tol, &
-                max_collisions=max_collisions, gaps=gaps)
+        cli%files = .true.
+        call cli%add_int("p", itoa(defaults%p), "number of spheres", lo=2, hi=max_spheres, &
+            in_file=.true.)
+        if (present(e_set_by)) then
+            if (.not. allocated(cli%about)) cli%about = ""
+            cli%about = cli%about//nl//"The scene key e is not taken: "//e_set_by//" sets e."
         else
-            call scene_init(scene, stat, msg, p=p, e=e, d=d, a=a, v0=v0, tol=tol, &
-                max_collisions=max_collisions)
+            call cli%add_real("e", short_text(e), "restitution coefficient of every impact", &
+                lo=0.0_qp, hi=1.0_qp, in_file=.true.)
         end if
+        call cli%add_real("d", short_text(defaults%d), "sphere diameter", lo=0.0_qp, &
+            in_file=.true.)
+        call cli%add_real("a", "1", "every initial gap", lo=0.0_qp, &
+            in_file=.true.)
+        call cli%add_reals("gaps", "a1,a2,...", "the initial gaps, p-1 values (instead of a)", &
+            lo=0.0_qp, &
+            overrides="a", in_file=.true.)
+        call cli%add_real("v0", short_text(defaults%v0), "speed of sphere 1 at t = 0", &
+            lo=0.0_qp, lo_open=.true., in_file=.true.)
+        call cli%add_reals("masses", "m1,m2,...", "the masses, p values (default: all 1)", &
+            lo=0.0_qp, lo_open=.true., in_file=.true.)
+        call cli%add_real("tol", short_text(defaults%tol), "rates below tol*v0 and gaps " &
+            //"below tol*max(d, a) are insignificant", lo=0.0_qp, hi=1.0_qp, hi_open=.true., &
+            shown=short_text(defaults%tol, 3), in_file=.true.)
+        call cli%add_int("max_collisions", itoa(defaults%max_collisions), &
+            "safety net: a run ends after this many collisions", lo=1, in_file=.true.)
+    end subroutine add_scene_keys
 
-    contains
-
-        !> Read the &scene group of a namelist file into the local values.
-        subroutine read_namelist(path)
-            character(len=*), intent(in) :: path
-            real(qp), allocatable :: m_in(:), a_in(:)
-            character(len=200) :: iomsg
-            integer :: unit, ios
-            namelist /scene/ p, e, d, a, v0, tol, max_collisions, masses, gaps
-            real(qp), parameter :: unset = -huge(1.0_qp)
-            allocate (m_in(max_list), a_in(max_list), source=unset)
-            call move_alloc(m_in, masses)
-            call move_alloc(a_in, gaps)
-            open (newunit=unit, file=path, status="old", action="read", iostat=ios, iomsg=iomsg)
-            if (ios /= 0) then
-                stat = status_invalid
-                msg = "namelist file '"//path//"': cannot be read ("//trim(iomsg)//")"
+    !> The scene the scene keys of `cli` describe. Beyond each key's own range,
+    !> the lists must have p and p-1 values, and the scene's scales must be
+    !> finite in real(16) so that no time, position or velocity of the run
+    !> overflows: the row's length (p-1) d + sum(gaps), the time scale
+    !> sum(gaps)/v0, the velocity scale v0 sum(m)/min(m) (no sphere ever moves
+    !> faster) and the final positions' scale, that length times (1 + 2
+    !> sum(m)/min(m)).
+    subroutine scene_from_cli(cli, scene, error)
+        type(cli_t), intent(in) :: cli
+        type(scene_t), intent(out) :: scene
+        type(error_t), allocatable, intent(out) :: error
+        real(qp), allocatable :: masses(:), gaps(:)
+        type(scene_t) :: defaults
+        real(qp) :: e
+        integer :: p, stat
+        character(len=400) :: msg
+        p = cli%get_int("p")
+        e = defaults%e
+        if (find_key(cli, "e") > 0) e = cli%get_real("e")
+        if (cli%given("masses")) then
+            masses = cli%get_reals("masses")
+            if (size(masses) /= p) then
+                call fatal_error(error, "masses = "//printable(cli%get_text("masses"))//": " &
+                    //itoa(size(masses))//" values given; allowed exactly p = "//itoa(p) &
+                    //" values, each > 0")
                 return
             end if
-            read (unit, nml=scene, iostat=ios, iomsg=iomsg)
-            close (unit)
-            if (ios /= 0) then
-                stat = status_invalid
-                msg = "namelist file '"//path//"': "//trim(iomsg) &
-                    //" (allowed: a &scene group of the scene keys)"
+        else
+            allocate (masses(p), source=1.0_qp)
+        end if
+        if (cli%given("gaps")) then
+            gaps = cli%get_reals("gaps")
+            if (size(gaps) /= p - 1) then
+                call fatal_error(error, "gaps = "//printable(cli%get_text("gaps"))//": " &
+                    //itoa(size(gaps))//" values given; allowed exactly p-1 = "//itoa(p - 1) &
+                    //" values, each >= 0")
                 return
             end if
-            n_masses = last_set(masses)
-            n_gaps = last_set(gaps)
-            have_masses = n_masses > 0
-            have_gaps = n_gaps > 0
-            masses = masses(:n_masses)
-            gaps = gaps(:n_gaps)
-            if (.not. (abs(e) <= huge(e) .and. abs(d) <= huge(d) .and. abs(a) <= huge(a) &
-                .and. abs(v0) <= huge(v0) .and. abs(tol) <= huge(tol))) then
-                stat = status_invalid
-                msg = "namelist file '"//path//"': e, d, a, v0, tol: allowed finite numbers"
-            end if
-        end subroutine read_namelist
+        else
+            allocate (gaps(p - 1), source=cli%get_real("a"))
+        end if
+        call check_scales(cli, p, cli%get_real("d"), cli%get_real("v0"), masses, gaps, error)
+        if (allocated(error)) return
+        call scene_init(scene, stat, msg, p=p, e=e, d=cli%get_real("d"), &
+            v0=cli%get_real("v0"), tol=cli%get_real("tol"), &
+            max_collisions=cli%get_int("max_collisions"), masses=masses, gaps=gaps)
+        if (stat /= status_normal) call fatal_error(error, trim(msg))
+    end subroutine scene_from_cli
 
-        pure integer function last_set(xs)
-            real(qp), intent(in) :: xs(:)
-            integer :: j
-            last_set = 0
-            do j = size(xs), 1, -1
-                if (xs(j) /= -huge(1.0_qp)) then
-                    last_set = j
-                    return
-                end if
-            end do
-        end function last_set
-
-    end subroutine scene_from_args
-
-    !> The value of the last `key=value` argument among those not yet used;
-    !> `found` tells whether there was one, and it is marked used.
-    pure subroutine take_key(args, used, key, value, found)
-        character(len=*), intent(in) :: args(:)
-        logical, intent(inout) :: used(:)
-        character(len=*), intent(in) :: key
-        character(len=:), allocatable, intent(out) :: value
-        logical, intent(out) :: found
-        integer :: i, j
-        found = .false.
-        value = ""
-        do i = 1, size(args)
-            if (used(i)) cycle
-            j = index(args(i), "=")
-            if (j <= 1) cycle
-            if (trim(adjustl(args(i)(:j - 1))) /= key) cycle
-            value = trim(adjustl(args(i)(j + 1:)))
-            used(i) = .true.
-            found = .true.
-        end do
-    end subroutine take_key
-
-    !> The optional `key=value` among args read into x, which keeps its value
-    !> when the key is absent; a value outside [lo, hi] is refused with a
-    !> message naming `allowed` (default: lo <= key <= hi).
-    subroutine real_key(args, used, key, x, lo, hi, stat, msg, allowed)
-        character(len=*), intent(in) :: args(:), key
-        logical, intent(inout) :: used(:)
-        real(qp), intent(inout) :: x
-        real(qp), intent(in) :: lo, hi
-        integer, intent(out) :: stat
-        character(len=*), intent(out) :: msg
-        character(len=*), intent(in), optional :: allowed
-        character(len=:), allocatable :: text
-        logical :: found
-        real(qp) :: value
-        stat = status_normal
-        msg = ""
-        call take_key(args, used, key, text, found)
-        if (.not. found) return
-        call parse_real(key, text, value, stat, msg)
-        if (stat /= status_normal) return
-        if (.not. (value >= lo .and. value <= hi)) then
-            stat = status_invalid
-            if (present(allowed)) then
-                msg = key//" = "//text//": allowed "//allowed
-            else
-                msg = key//" = "//text//": allowed "//trim(rstr(lo))//" <= "//key//" <= " &
-                    //trim(rstr(hi))
-            end if
+    !> Refuse a scene whose length, time, velocity or position scale is not
+    !> finite in real(16), naming the key that makes it so.
+    subroutine check_scales(cli, p, d, v0, masses, gaps, error)
+        type(cli_t), intent(in) :: cli
+        integer, intent(in) :: p
+        real(qp), intent(in) :: d, v0, masses(:), gaps(:)
+        type(error_t), allocatable, intent(out) :: error
+        character(len=*), parameter :: row_text = "(p-1) d + sum(gaps)", &
+            spread_text = "(1 + 2 sum(m)/min(m)) ((p-1) d + sum(gaps))"
+        real(qp) :: row, gap_sum, diameters, ratio, big
+        character(len=:), allocatable :: gap_key, limit, culprit
+        big = huge(1.0_qp)
+        limit = short_text(big, 3, "down")
+        gap_key = "a"
+        if (cli%given("gaps")) gap_key = "gaps"
+        gap_sum = sum(gaps)
+        diameters = real(p - 1, qp)*d
+        row = diameters + gap_sum
+        ! the larger of the two terms of the row's length is the one at fault
+        culprit = gap_key
+        if (.not. (diameters <= big) .or. diameters >= gap_sum) culprit = "d"
+        if (.not. (row <= big)) then
+            call refuse_scale(error, cli, culprit, "the row's length "//row_text &
+                //" overflows real(16); allowed "//row_text//" <= "//limit)
             return
         end if
-        x = value
-    end subroutine real_key
-
-    !> The optional integer `key=value` among args read into n, as real_key.
-    subroutine int_key(args, used, key, n, lo, hi, stat, msg)
-        character(len=*), intent(in) :: args(:), key
-        logical, intent(inout) :: used(:)
-        integer, intent(inout) :: n
-        integer, intent(in) :: lo, hi
-        integer, intent(out) :: stat
-        character(len=*), intent(out) :: msg
-        character(len=:), allocatable :: text
-        character(len=24) :: bounds
-        logical :: found
-        integer :: value
-        stat = status_normal
-        msg = ""
-        call take_key(args, used, key, text, found)
-        if (.not. found) return
-        call parse_int(key, text, value, stat, msg)
-        if (stat /= status_normal) return
-        if (value < lo .or. value > hi) then
-            stat = status_invalid
-            write (bounds, "(i0, ' <= ', a)") lo, key
-            msg = key//" = "//text//": allowed "//trim(bounds)
-            if (hi < huge(hi)) then
-                write (bounds, "(' <= ', i0)") hi
-                msg = trim(msg)//trim(bounds)
-            end if
+        if (.not. (gap_sum/v0 <= big)) then
+            call refuse_scale(error, cli, "v0", "the time scale sum(gaps)/v0 overflows " &
+                //"real(16) (sum(gaps) = "//short_text(gap_sum, 3)//"); allowed v0 >= " &
+                //short_text(gap_sum/big, 3, "up"))
             return
         end if
-        n = value
-    end subroutine int_key
-
-    !> Message for the first argument that no key of the program took.
-    pure subroutine unused_arg(args, used, allowed, stat, msg)
-        character(len=*), intent(in) :: args(:)
-        logical, intent(in) :: used(:)
-        character(len=*), intent(in) :: allowed
-        integer, intent(out) :: stat
-        character(len=*), intent(out) :: msg
-        integer :: i, j
-        stat = status_normal
-        msg = ""
-        do i = 1, size(args)
-            if (used(i)) cycle
-            stat = status_invalid
-            j = index(args(i), "=")
-            if (j > 1) then
-                msg = "unknown key '"//args(i)(:j - 1)//"': allowed keys are "//allowed
-            else
-                msg = "argument '"//trim(args(i))//"': allowed key=value with keys "//allowed
-            end if
+        ratio = sum(masses)/minval(masses)
+        if (.not. (ratio <= big/2.0_qp)) then
+            call refuse_scale(error, cli, "masses", "sum(masses)/min(masses) overflows " &
+                //"real(16); allowed sum(masses)/min(masses) <= " &
+                //short_text(big/2.0_qp, 3, "down"))
             return
-        end do
-    end subroutine unused_arg
+        end if
+        if (.not. (2.0_qp*ratio*v0 <= big)) then
+            call refuse_scale(error, cli, "v0", "the velocity scale 2 v0 sum(m)/min(m) " &
+                //"overflows real(16); allowed v0 <= "//short_text(big/(2.0_qp*ratio), 3, "down"))
+            return
+        end if
+        if (.not. ((1.0_qp + 2.0_qp*ratio)*row <= big)) then
+            if (ratio > real(p, qp)) culprit = "masses"
+            call refuse_scale(error, cli, culprit, "the positions' scale "//spread_text &
+                //" overflows real(16); allowed "//spread_text//" <= "//limit)
+        end if
+    end subroutine check_scales
 
-    !> Usage lines for the scene keys common to every program.
-    pure function scene_help() result(text)
-        character(len=:), allocatable :: text
-        character(len=*), parameter :: nl = new_line("a")
-        text = &
-            "  p=4                 number of spheres, integer >= 2"//nl// &
-            "  e=0.2               restitution coefficient, 0 <= e <= 1"//nl// &
-            "  d=1                 sphere diameter, >= 0"//nl// &
-            "  a=1                 every initial gap, >= 0"//nl// &
-            "  gaps=a1,a2,...      initial gaps, p-1 values >= 0 (overrides a)"//nl// &
-            "  v0=1                speed of sphere 1 at t=0, > 0"//nl// &
-            "  masses=m1,m2,...    masses, p values > 0 (default all 1)"//nl// &
-            "  tol=1.93e-34        rates below tol*v0 and gaps below tol*max(d,a) are"//nl// &
-            "                      insignificant (end of run, collapse); 0 <= tol < 1"//nl// &
-            "  max_collisions=1000000  safety net, integer >= 1"//nl// &
-            "  FILE                a namelist file with a &scene group of these keys"
-    end function scene_help
-
-    pure logical function has_word(text, word)
-        character(len=*), intent(in) :: text, word
-        integer :: i
-        character(len=len(text)) :: lower
-        lower = text
-        do i = 1, len(text)
-            if (lower(i:i) >= "A" .and. lower(i:i) <= "Z") &
-                lower(i:i) = achar(iachar(lower(i:i)) + 32)
-        end do
-        has_word = index(lower, word) > 0
-    end function has_word
-
-    pure function itoa(i) result(s)
-        integer, intent(in) :: i
-        character(len=:), allocatable :: s
-        character(len=16) :: buf
-        write (buf, "(i0)") i
-        s = trim(buf)
-    end function itoa
-
-    pure function rstr(x) result(s)
-        real(qp), intent(in) :: x
-        character(len=48) :: s
-        write (s, "(g0)") real(x, kind(1.0d0))
-    end function rstr
+    !> The message of a scene refused for its scales, naming key `name` and its value.
+    subroutine refuse_scale(error, cli, name, why)
+        type(error_t), allocatable, intent(out) :: error
+        type(cli_t), intent(in) :: cli
+        character(len=*), intent(in) :: name, why
+        call fatal_error(error, origin(cli%keys(key_index(cli, name)))//name//" = " &
+            //printable(cli%get_text(name))//": "//why)
+    end subroutine refuse_scale
 
 end module sphere_row_args

@@ -1,3 +1,5 @@
+#include "sphere_row_kinds.h"
+#ifdef SPHERE_ROW_XDP
 !> The engine of sphere_row_engine.inc instantiated in the 80-bit extended kind.
 module sphere_row_engine_xdp
     use sphere_row_kinds, only: wp => xdp, qp
@@ -8,3 +10,4 @@ module sphere_row_engine_xdp
     private
     include "sphere_row_engine.inc"
 end module sphere_row_engine_xdp
+#endif

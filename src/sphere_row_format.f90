@@ -1,11 +1,36 @@
-!> Text form of reals with every significant digit of their kind.
+!> Text form of numbers: reals with every significant digit of their kind,
+!> integers of either kind with as many places as they need.
 module sphere_row_format
+    use, intrinsic :: iso_fortran_env, only: int64
     use sphere_row_kinds, only: qp
     implicit none
     private
-    public :: real_str
+    public :: real_str, itoa
+
+    !> Text of an integer of either kind.
+    interface itoa
+        module procedure itoa_default, itoa_int64
+    end interface itoa
 
 contains
+
+    !> Text of a default integer.
+    pure function itoa_default(i) result(s)
+        integer, intent(in) :: i
+        character(len=:), allocatable :: s
+        character(len=24) :: buf
+        write (buf, "(i0)") i
+        s = trim(buf)
+    end function itoa_default
+
+    !> Text of a 64-bit integer (counts, fingerprints).
+    pure function itoa_int64(i) result(s)
+        integer(int64), intent(in) :: i
+        character(len=:), allocatable :: s
+        character(len=24) :: buf
+        write (buf, "(i0)") i
+        s = trim(buf)
+    end function itoa_int64
 
     !> `x` (converted exactly to real128) written with `digits` significant
     !> digits in scientific notation; the exponent gets as many places as it needs.
@@ -32,4 +57,5 @@ contains
         write (buf, form) x
         str = trim(adjustl(buf))
     end function real_str
+
 end module sphere_row_format

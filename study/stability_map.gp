@@ -1,4 +1,4 @@
-# Stability map of the methods of issue 4 (ARGESIM C12).
+# Stability map of the methods compared (ARGESIM C12).
 #
 #   gnuplot -e "dir='results'; out='results/methods_stability'" study/stability_map.gp
 #

@@ -1,4 +1,4 @@
-# Work-precision chart of the methods of issue 4 (ARGESIM C12).
+# Work-precision chart of the methods compared (ARGESIM C12).
 #
 #   gnuplot -e "dir='results'; out='results/methods_work_precision'" study/work_precision.gp
 #

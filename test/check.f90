@@ -1,22 +1,19 @@
-!> Test driver: runs every suite and ends with `N passed, N failed`.
+!> Test driver of the engine and the CLI: runs every suite and ends with
+!> `N passed, N failed`.
 program check
     use testsuite, only: run_tests
     use test_engine, only: collect_engine
     use test_collapse, only: collect_collapse
     use test_cli, only: collect_cli
-    use test_study, only: collect_study
-    use test_monte_carlo, only: collect_monte_carlo
-    use test_methods, only: collect_methods
+    use test_front, only: collect_front
     implicit none
     integer :: passed, failed
     passed = 0
     failed = 0
     call run_tests("engine", collect_engine(), passed, failed)
     call run_tests("collapse", collect_collapse(), passed, failed)
+    call run_tests("front", collect_front(), passed, failed)
     call run_tests("cli", collect_cli(), passed, failed)
-    call run_tests("study", collect_study(), passed, failed)
-    call run_tests("monte_carlo", collect_monte_carlo(), passed, failed)
-    call run_tests("methods", collect_methods(), passed, failed)
     print "(i0, ' passed, ', i0, ' failed')", passed, failed
     if (failed > 0) stop 1, quiet=.true.
 end program check

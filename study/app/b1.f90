@@ -1,0 +1,270 @@
+!> C12 task b1: number of collisions n(e) from e = 1 down into the
+!> quasi-plastic regime, its intervals of constant n and sequence, and the
+!> critical restitution below which the collisions never end.
+program c12_b1
+    use sphere_row, only: qp, scene_t, run_t, event_log_t, simulate, str, status_word, &
+        status_normal, status_collapsed, itoa
+    use sphere_row_tables, only: open_table, write_answer, answer_header, tab
+    use sphere_row_analysis, only: sequence_of, sequence_text, sequence_hash, tail_period, &
+        critical_restitution, bisect_changes
+    use sphere_row_study_cli, only: cli_t, add_scene_keys, start_program, read_keys, &
+        stop_unless_normal
+    use sphere_row_sorting, only: sort
+    implicit none
+    character(len=*), parameter :: nl = new_line("a")
+    !> Class of a run with a collapse: its count depends on tol, not on e alone.
+    integer(8), parameter :: collapsed_class = 0_8
+    type(cli_t) :: cli
+    character(len=:), allocatable :: out
+    character(len=300) :: msg
+    type(scene_t) :: scene
+    type(run_t) :: run
+    type(event_log_t) :: events
+    integer, allocatable :: pairs(:), cycle(:)
+    integer :: stat, unit, j, n_scan, n_bisect_max, n_delta, n_boundaries, period, k
+    integer :: n_intervals, n_fit, iterations, stat_c
+    real(qp) :: resolution, tol_fine, e_lo, e_hi, e_c, e_c_sim, closed, lo, hi, mid
+    real(qp) :: sx, sy, sxx, sxy, slope, intercept, e_quasi, delta
+    real(qp), allocatable :: e_scan(:), boundaries(:)
+    integer, allocatable :: n_scan_runs(:), status_scan(:)
+    integer(8), allocatable :: class_scan(:)
+    integer(8) :: class_mid
+
+    call start_program(cli, "c12-b1", &
+        "C12 task b1: n(e) from e = 1 down to 0, its intervals of constant n and"//nl// &
+        "collision sequence, and the critical restitution of inelastic collapse."//nl// &
+        "Writes OUT/b1_scan.tsv, b1_intervals.tsv, b1_critical.tsv, b1_answers.tsv.")
+    call cli%add_int("n_scan", "2001", "points of the scan of e in [0, 1]", lo=3)
+    call cli%add_real("resolution", "1e-12", "width to which each change of n is bisected", &
+        lo=1.0e-30_qp, hi=0.1_qp)
+    call cli%add_int("n_bisect_max", "300", "changes with larger n on both sides are not " &
+        //"bisected", lo=1)
+    call cli%add_real("tol_fine", "1e-4000", "tolerance of the runs near e_crit", &
+        lo=1.0e-4900_qp, hi=0.5_qp)
+    call add_scene_keys(cli, e_set_by="the scan of e")
+    call read_keys(cli, scene)
+    out = cli%get_word("out")
+    n_scan = cli%get_int("n_scan")
+    resolution = cli%get_real("resolution")
+    n_bisect_max = cli%get_int("n_bisect_max")
+    tol_fine = cli%get_real("tol_fine")
+
+    ! 1. dense scan of e from 1 down to 0 with the scene's own tolerance
+    allocate (e_scan(n_scan), n_scan_runs(n_scan), status_scan(n_scan), class_scan(n_scan))
+    do j = 1, n_scan
+        e_scan(j) = 1.0_qp - real(j - 1, qp)/real(n_scan - 1, qp)
+        call classify(e_scan(j), class_scan(j))
+        n_scan_runs(j) = run%n
+        status_scan(j) = run%status
+    end do
+
+    ! 2. every change of (n, sequence) between neighbours, bisected to `resolution`
+    allocate (boundaries(0))
+    do j = 1, n_scan - 1
+        if (class_scan(j) == class_scan(j + 1)) cycle
+        if (min(n_scan_runs(j), n_scan_runs(j + 1)) > n_bisect_max) cycle
+        call bisect_changes(class_of, e_scan(j + 1), e_scan(j), class_scan(j + 1), &
+            class_scan(j), resolution, boundaries)
+    end do
+    n_boundaries = size(boundaries)
+    call sort(boundaries)
+
+    call write_scan()
+
+    call write_intervals()
+
+    ! 3. the critical restitution by simulation alone, with a tolerance near
+    !    the bottom of real128's range: bisect finite against collapsed
+    scene%tol = tol_fine
+    lo = e_quasi - 0.01_qp
+    hi = e_quasi + 0.01_qp
+    iterations = 0
+    do while (hi - lo > resolution .and. iterations < 200)
+        mid = 0.5_qp*(lo + hi)
+        scene%e = mid
+        call simulate(scene, run)
+        if (run%status == status_collapsed) then
+            lo = mid
+        else
+            hi = mid
+        end if
+        iterations = iterations + 1
+    end do
+    e_c_sim = hi
+
+    ! 4. the critical restitution from the cycle of the collapse: a run with
+    !    the fine tolerance just below the simulated boundary follows the cycle
+    !    for thousands of collisions; find its period inside the run and bisect
+    !    where the cycle's rate map gets complex eigenvalues
+    e_lo = e_c_sim - 0.001_qp
+    scene%e = e_lo
+    call simulate(scene, run, events)
+    call sequence_of(events, pairs, before_collapse=.true.)
+    pairs = pairs(:3*size(pairs)/4)
+    period = tail_period(pairs, 48, 24)
+    e_c = -1.0_qp
+    stat_c = -1
+    if (period > 0) then
+        cycle = pairs(size(pairs) - period + 1:)
+        e_hi = e_c_sim + 0.01_qp
+        call critical_restitution(scene%m, cycle, e_lo, e_hi, e_c, stat_c)
+    end if
+    if (stat_c /= status_normal) e_c = -1.0_qp
+    closed = 3.0_qp - 2.0_qp*sqrt(2.0_qp)
+
+    ! 5. n against the distance to e_c, with the fine tolerance
+    n_delta = 25
+    call open_table(out, "b1_critical.tsv", "delta=e-e_crit"//tab//"e"//tab//"collisions" &
+        //tab//"status"//tab//"collisions*sqrt(delta)", unit, stat, msg)
+    call stop_unless_normal(stat, msg)
+    sx = 0
+    sy = 0
+    sxx = 0
+    sxy = 0
+    n_fit = 0
+    do k = 1, n_delta
+        delta = 10.0_qp**(-1.0_qp - 6.0_qp*real(k - 1, qp)/real(n_delta - 1, qp))
+        if (e_c > 0) then
+            scene%e = e_c + delta
+        else
+            scene%e = e_c_sim + delta
+        end if
+        call simulate(scene, run)
+        write (unit, "(a)") str(delta)//tab//str(scene%e)//tab//itoa(run%n)//tab// &
+            status_word(run%status)//tab//str(run%n*sqrt(delta))
+        ! fit log n = intercept + slope log delta where the asymptote holds (n >= 200)
+        if (run%status == status_normal .and. run%n >= 200) then
+            sx = sx + log(delta)
+            sy = sy + log(real(run%n, qp))
+            sxx = sxx + log(delta)**2
+            sxy = sxy + log(delta)*log(real(run%n, qp))
+            n_fit = n_fit + 1
+        end if
+    end do
+    close (unit)
+    slope = 0
+    intercept = 0
+    if (n_fit >= 2) then
+        slope = (n_fit*sxy - sx*sy)/(n_fit*sxx - sx**2)
+        intercept = (sy - slope*sx)/n_fit
+    end if
+
+    call write_answers()
+
+contains
+
+    !> The answers of task b1: the critical restitution from the collapse cycle
+    !> and by simulation, against 3 - 2 sqrt(2); the power law of n near it;
+    !> the top of the quasi-plastic range; the scan and its intervals.
+    subroutine write_answers()
+        call open_table(out, "b1_answers.tsv", answer_header, unit, stat, msg)
+        call stop_unless_normal(stat, msg)
+        if (e_c > 0) then
+            call write_answer(unit, "b1.e_crit", str(e_c), "closed_form_3-2sqrt2", str(closed), &
+                str(e_c - closed), "e where the rate map of the collapse cycle "// &
+                sequence_text(cycle)//" (period "//itoa(period)//", from the run at e = "// &
+                str(e_lo)//") gets a complex eigenvalue pair: bisection of its discriminant "// &
+                "in real(16); it coincides with tan^2(pi/8) = 3 - 2 sqrt(2)")
+        else
+            call write_answer(unit, "b1.e_crit", str(e_c_sim), "-", "-", "-", &
+                "no collapse cycle found for this scene (or not 4 spheres): the "// &
+                "simulation bound b1.e_crit_simulation is given")
+        end if
+        call write_answer(unit, "b1.e_crit_simulation", str(e_c_sim), "b1.e_crit", str(e_c), &
+            str(e_c_sim - e_c), "bisection of collapsed against finite runs with tol = "// &
+            str(tol_fine)//"; a finite run this close to e_crit shrinks its relative "// &
+            "velocities below any fixed tolerance, so this bound lies above e_crit")
+        call write_answer(unit, "b1.exponent", str(slope), "theory", str(-0.5_qp), &
+            str(slope + 0.5_qp), "least-squares slope of log n against log(e - e_crit) over "// &
+            itoa(n_fit)//" points with n >= 200; near e_crit the cycle map has eigenvalues "// &
+            "r exp(+-i theta) with theta ~ sqrt(e - e_crit), and the collisions end after "// &
+            "about pi/theta cycles")
+        call write_answer(unit, "b1.prefactor", str(exp(intercept)), "-", "-", "-", &
+            "n ~ prefactor (e - e_crit)^exponent")
+        call write_answer(unit, "b1.e_quasi_plastic", str(e_quasi), "-", "-", "-", &
+            "largest e where the scene's default tolerance (the relative velocities fall "// &
+            "below epsilon v0) reports the quasi-plastic case: the definition's "// &
+            "'quasi-plastic case reached'")
+        call write_answer(unit, "b1.scan_points", itoa(n_scan), "-", "-", "-", &
+            "e from 1 down to 0 in equal steps")
+        call write_answer(unit, "b1.intervals", itoa(n_intervals), "-", "-", "-", &
+            "intervals of constant n and sequence found, each end bisected to "// &
+            str(resolution)//" (changes with n > "//itoa(n_bisect_max)//" on both sides are "// &
+            "left to the critical table)")
+        call write_answer(unit, "b1.n_at_e1", itoa(n_scan_runs(1)), "closed_form", &
+            itoa(scene%p - 1), itoa(n_scan_runs(1) - (scene%p - 1)), &
+            "e = 1: one collision per pair")
+        close (unit)
+    end subroutine write_answers
+
+    !> b1_intervals.tsv: the intervals between consecutive changes, each with its
+    !> collision count and sequence; e_quasi is the top of the collapsed ones.
+    subroutine write_intervals()
+        ! intervals between consecutive boundaries, each with its sequence
+        call open_table(out, "b1_intervals.tsv", "e_low"//tab//"e_high"//tab//"width"//tab// &
+            "collisions"//tab//"status"//tab//"sequence", unit, stat, msg)
+        call stop_unless_normal(stat, msg)
+        n_intervals = 0
+        e_quasi = -1.0_qp
+        do j = 0, n_boundaries
+            if (j == 0) then
+                lo = 0.0_qp
+            else
+                lo = boundaries(j)
+            end if
+            if (j == n_boundaries) then
+                hi = 1.0_qp
+            else
+                hi = boundaries(j + 1)
+            end if
+            mid = 0.5_qp*(lo + hi)
+            call classify(mid, class_mid)
+            if (run%status == status_collapsed) then
+                e_quasi = max(e_quasi, hi)
+                write (unit, "(a)") str(lo)//tab//str(hi)//tab//str(hi - lo)//tab// &
+                    itoa(run%n)//tab//status_word(run%status)//tab//"-"
+            else
+                call sequence_of(events, pairs)
+                write (unit, "(a)") str(lo)//tab//str(hi)//tab//str(hi - lo)//tab// &
+                    itoa(run%n)//tab//status_word(run%status)//tab//sequence_text(pairs)
+            end if
+            n_intervals = n_intervals + 1
+        end do
+        close (unit)
+    end subroutine write_intervals
+
+    !> b1_scan.tsv: the scan of e, one row per value.
+    subroutine write_scan()
+        call open_table(out, "b1_scan.tsv", "e"//tab//"collisions"//tab//"status"//tab// &
+            "sequence_hash", unit, stat, msg)
+        call stop_unless_normal(stat, msg)
+        do j = 1, n_scan
+            write (unit, "(a)") str(e_scan(j))//tab//itoa(n_scan_runs(j))//tab// &
+                status_word(status_scan(j))//tab//itoa(class_scan(j))
+        end do
+        close (unit)
+    end subroutine write_scan
+
+    !> classify as a function, for bisect_changes.
+    function class_of(e) result(class)
+        real(qp), intent(in) :: e
+        integer(8) :: class
+        call classify(e, class)
+    end function class_of
+
+    !> Run at e with the scene's tolerance; class = sequence fingerprint, or
+    !> collapsed_class when the row collapsed.
+    subroutine classify(e, class)
+        real(qp), intent(in) :: e
+        integer(8), intent(out) :: class
+        scene%e = e
+        call simulate(scene, run, events)
+        if (run%status == status_collapsed) then
+            class = collapsed_class
+        else
+            call sequence_of(events, pairs)
+            class = sequence_hash(pairs)
+        end if
+    end subroutine classify
+
+end program c12_b1

@@ -1,0 +1,177 @@
+!> Speed of the engine per precision kind and of the study, into bench.tsv.
+!>
+!> Timing is measured here, never asserted in tests: wall-clock numbers of
+!> one machine, written with a description of that machine.
+program c12_bench
+    use, intrinsic :: iso_fortran_env, only: compiler_version, compiler_options, &
+        int64
+    use sphere_row, only: qp, dp, scene_t, scene_init, status_normal, itoa
+    use sphere_row_kind_engines, only: built_kinds, kind_info_t, kind_engine_t, new_kind_engine
+    use sphere_row_tables, only: open_table, tab, split_tabs, cpu_model
+    use sphere_row_monte_carlo, only: normal_sampler_t, mc_counts_t, monte_carlo_v4
+    use sphere_row_study_cli, only: cli_t, start_program, read_keys, fail, stop_unless_normal
+    implicit none
+    character(len=*), parameter :: nl = new_line("a")
+    character(len=*), parameter :: tasks(7) = [character(len=7) :: "a1", "a2", "b1", &
+        "b2", "c1", "c2", "methods"]
+    type(cli_t) :: cli
+    character(len=:), allocatable :: out
+    character(len=300) :: msg
+    real(qp) :: seconds, e_values(3) = [0.2_qp, 0.5_qp, 0.18_qp]
+    real :: min_seconds
+    integer :: stat, unit, i, k
+
+    call start_program(cli, "c12-bench", &
+        "Times the engine in each precision kind (ns per collision) and collects"//nl// &
+        "the wall time of each study program from OUT/timing/; writes OUT/bench.tsv.")
+    call cli%add_real("min_seconds", "0.1", "seconds of repeated runs per timing", &
+        lo=0.0_qp, hi=100.0_qp, lo_open=.true., hi_open=.true.)
+    call read_keys(cli)
+    out = cli%get_word("out")
+    min_seconds = real(cli%get_real("min_seconds"))
+
+    call open_table(out, "bench.tsv", "quantity"//tab//"value"//tab//"unit"//tab//"note", &
+        unit, stat, msg)
+    call stop_unless_normal(stat, msg)
+    write (unit, "(a)") "machine.cpu"//tab//cpu_model()//tab//"-"//tab//"/proc/cpuinfo"
+    write (unit, "(a)") "machine.compiler"//tab//compiler_version()//tab//"-"//tab//"-"
+    write (unit, "(a)") "machine.flags"//tab//compiler_options()//tab//"-"//tab//"-"
+    do k = 1, size(e_values)
+        do i = size(built_kinds), 1, -1
+            call time_kind(built_kinds(i), e_values(k))
+        end do
+    end do
+    call time_monte_carlo()
+    call method_costs()
+    seconds = 0
+    do i = 1, size(tasks)
+        call study_time("c12-"//trim(tasks(i)), seconds)
+    end do
+    write (unit, "(a, f0.3, a)") "study.total_seconds"//tab, seconds, tab//"s"//tab// &
+        "wall time of the study programs (six tasks and the methods) of one make study, "// &
+        "one after the other"
+    close (unit)
+
+contains
+
+    !> Nanoseconds per collision of the definition's scene at e in one kind,
+    !> over at least min_seconds of repeated runs (one core).
+    subroutine time_kind(info, e)
+        type(kind_info_t), intent(in) :: info
+        real(qp), intent(in) :: e
+        !> Runs between two looks at the clock.
+        integer(int64), parameter :: runs_per_look = 1000
+        class(kind_engine_t), allocatable :: engine
+        type(scene_t) :: scene
+        integer(int64) :: c0, c1, rate, collisions, runs
+        real :: elapsed
+        character(len=32) :: buf
+        character(len=:), allocatable :: key
+        call scene_init(scene, stat, msg, e=e)
+        call new_kind_engine(info%precision, engine)
+        call engine%prepare(scene, -1.0_qp, stat, msg)
+        collisions = 0
+        runs = 0
+        call system_clock(c0, rate)
+        do
+            collisions = collisions + engine%count_collisions()
+            runs = runs + 1
+            if (mod(runs, runs_per_look) /= 0) cycle
+            call system_clock(c1)
+            elapsed = real(c1 - c0)/real(rate)
+            if (elapsed >= min_seconds) exit
+        end do
+        write (buf, "(f4.2)") e
+        key = "engine."//trim(info%storage)
+        write (unit, "(a, f0.1, a)") key//".ns_per_collision.e"//trim(buf) &
+            //tab, 1.0e9*elapsed/real(collisions), tab//"ns"//tab//itoa(int(collisions/runs)) &
+            //" collisions per run, "//itoa(int(runs))//" runs"
+        write (unit, "(a, es10.3, a)") key//".collisions_per_second.e" &
+            //trim(buf)//tab, real(collisions)/elapsed, tab//"1/s"//tab//"-"
+    end subroutine time_kind
+
+    !> Wall time of the c2 Monte Carlo loop alone: 10^6 real(16) runs of the
+    !> definition's scene with e ~ N(0.5, 0.05) (target: 2 s on one core).
+    subroutine time_monte_carlo()
+        type(scene_t) :: scene
+        type(normal_sampler_t) :: sampler
+        type(mc_counts_t) :: counts
+        real(dp), allocatable :: v4(:)
+        integer(int64) :: c0, c1, rate
+        call scene_init(scene, stat, msg)
+        call sampler%seed(12, stat, msg)
+        allocate (v4(1000000))
+        call system_clock(c0, rate)
+        call monte_carlo_v4(sampler, scene, 0.5_qp, 0.05_qp, v4, counts, stat, msg)
+        call system_clock(c1)
+        call sampler%release()
+        write (unit, "(a, f0.3, a)") "c2.monte_carlo_seconds_1e6"//tab, &
+            real(c1 - c0)/real(rate), tab//"s"//tab//"10^6 samples in real(16), one core; "// &
+            "target 2 s"
+    end subroutine time_monte_carlo
+
+    !> The cost of each method of c12-methods on the same scenes, copied from
+    !> its table so that bench.tsv holds every speed figure of the study.
+    subroutine method_costs()
+        character(len=4000) :: line
+        character(len=:), allocatable :: f(:), head(:)
+        integer :: u, ios, c_e, c_label, c_run, c_col, j
+        open (newunit=u, file=out//"/methods_costs.tsv", status="old", action="read", &
+            iostat=ios)
+        if (ios /= 0) return
+        read (u, "(a)", iostat=ios) line
+        call split_tabs(trim(line), head)
+        c_e = 0
+        c_label = 0
+        c_run = 0
+        c_col = 0
+        do j = 1, size(head)
+            if (head(j) == "e[1]") c_e = j
+            if (head(j) == "label") c_label = j
+            if (head(j) == "ns_per_run[ns]") c_run = j
+            if (head(j) == "ns_per_collision[ns]") c_col = j
+        end do
+        if (min(c_e, c_label, c_run, c_col) == 0) then
+            close (u)
+            return
+        end if
+        do
+            read (u, "(a)", iostat=ios) line
+            if (ios /= 0) exit
+            call split_tabs(trim(line), f)
+            if (size(f) < max(c_e, c_label, c_run, c_col)) cycle
+            write (unit, "(a)") "methods."//trim(f(c_label))//".ns_per_run"//tab// &
+                trim(f(c_run))//tab//"ns"//tab//"e = "//trim(f(c_e))// &
+                ", from methods_costs.tsv"
+            write (unit, "(a)") "methods."//trim(f(c_label))//".ns_per_collision"//tab// &
+                trim(f(c_col))//tab//"ns"//tab//"e = "//trim(f(c_e))// &
+                ", from methods_costs.tsv"
+        end do
+        close (u)
+    end subroutine method_costs
+
+    !> Wall time of one study program as recorded by the Makefile.
+    subroutine study_time(program, total)
+        character(len=*), intent(in) :: program
+        real(qp), intent(inout) :: total
+        character(len=200) :: line
+        character(len=:), allocatable :: f(:)
+        real(qp) :: t
+        integer :: u, ios
+        open (newunit=u, file=out//"/timing/"//program//".tsv", status="old", action="read", &
+            iostat=ios)
+        if (ios /= 0) return
+        read (u, "(a)", iostat=ios) line
+        close (u)
+        if (ios /= 0) return
+        call split_tabs(line, f)
+        if (size(f) < 2) return
+        read (f(2), *, iostat=ios) t
+        if (ios /= 0) return
+        total = total + t
+        write (unit, "(a)") "study."//program//".seconds"//tab//trim(f(2))//tab//"s"//tab// &
+            "wall time of its last run by make"
+    end subroutine study_time
+
+
+end program c12_bench

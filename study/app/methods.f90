@@ -1,0 +1,445 @@
+!> c12-methods: the four methods of the comparison compared against the reference
+!> engine (real128) on the definition's scene, written as TSV tables:
+!> work-precision, stability over e, smallest distance to e_c per precision,
+!> costs per collision, and the platform the times were taken on.
+program c12_methods
+    use, intrinsic :: iso_fortran_env, only: output_unit, int64, &
+        compiler_version, compiler_options
+    use sphere_row, only: dp, qp, scene_t, scene_init, status_normal, status_word, str, itoa
+    use sphere_row_tables, only: cpu_model
+    use sphere_row_outcome, only: outcome_t, comparison_t, compare_outcomes, classify, &
+        category_word
+    use sphere_row_methods, only: method_t, new_method, reference_method, method_prepare, &
+        method_run, method_name, method_label, method_setting, method_v_tol, kind_name, &
+        method_engine, method_absolute, method_ode, method_stepping, stepper_rk8pd, &
+        stepper_rkf45
+    use sphere_row_kind_engines, only: built_kinds, kind_info, kind_info_t
+    use sphere_row_study_cli, only: cli_t, start_program, read_keys, fail, stop_unless_normal
+    use sphere_row_sorting, only: median
+    implicit none
+
+    character(len=*), parameter :: name = "c12-methods"
+    character(len=*), parameter :: nl = new_line("a")
+    character(len=*), parameter :: tab = achar(9)
+    !> The critical restitution of the definition's scene, 3 - 2 sqrt(2).
+    real(qp), parameter :: e_crit = 3.0_qp - 2.0_qp*sqrt(2.0_qp)
+    !> Closest distance to e_c of the stability map: the reference's count is
+    !> right down to about 1e-7 (see reference_method).
+    real(qp), parameter :: closest = 1.0e-7_qp
+    !> Decades searched for the smallest distance to e_c per precision.
+    integer, parameter :: max_decade = 12
+    !> Bisection steps refining that distance within a decade (in log10).
+    integer, parameter :: refine_steps = 12
+
+    type(cli_t) :: cli
+    character(len=:), allocatable :: out_dir
+    character(len=300) :: msg
+    type(method_t), allocatable :: methods(:)
+    logical, allocatable :: in_map(:)
+    real(qp), allocatable :: scenes(:)
+    logical, allocatable :: in_costs(:)
+    integer :: repeats, points, stat
+    integer(int64) :: max_steps
+    real(qp) :: min_time
+    real :: clock_start, clock_end
+
+    call cpu_time(clock_start)
+    call define_keys()
+    call read_keys(cli)
+    out_dir = cli%get_word("out")
+    repeats = cli%get_int("repeats")
+    min_time = cli%get_real("min_time")
+    points = cli%get_int("points")
+    max_steps = cli%get_int("max_steps")
+    call execute_command_line("mkdir -p '"//out_dir//"'", exitstat=stat)
+    if (stat /= 0) call fail("out = "//out_dir//": the directory cannot be created")
+
+    call method_list()
+    ! The work-precision scenes; the costs table takes e = 0.2 and e = 0.172.
+    scenes = [0.2_qp, e_crit + 1.0e-2_qp, e_crit + 1.0e-3_qp, 0.172_qp, e_crit + 1.0e-4_qp]
+    in_costs = [.true., .false., .false., .true., .false.]
+    call work_precision()
+    call lap("work-precision and costs")
+    call stability()
+    call lap("stability map, "//itoa(points)//" values of e")
+    call min_distance()
+    call lap("smallest distances to e_c")
+    call platform()
+    call cpu_time(clock_end)
+    write (output_unit, "(a, f0.1, a)") name//": tables written to "//out_dir//"/ in ", &
+        clock_end - clock_start, " s of CPU time"
+
+contains
+
+    !> The keys of c12-methods: where the tables go and how long to time.
+    subroutine define_keys()
+        call start_program(cli, name, &
+            "Compares four methods on the definition's scene (p = 4, d = a = v0 = 1)"//nl// &
+            "against the reference engine (real128): the engine in each real kind built;"//nl// &
+            "absolute variables in dp, qp; GSL ODE integration (rk8pd, rkf45) with state"//nl// &
+            "events; fixed time steps. Writes into the directory `out`:"//nl// &
+            "  methods_work_precision.tsv  CPU time and errors per scene, method, setting"//nl// &
+            "  methods_stability.tsv       outcome category over e from 1 to 0"//nl// &
+            "  methods_min_distance.tsv    smallest e - e_c with the right count, per kind"//nl// &
+            "  methods_costs.tsv           ns per run and per collision at e = 0.2, 0.172"//nl// &
+            "  methods_platform.tsv        CPU model, compiler version and options")
+        call cli%add_int("repeats", "5", "timing batches per measurement (median taken)", &
+            lo=1, hi=1000)
+        call cli%add_real("min_time", "0.05", "CPU seconds per measurement", lo=0.0_qp, &
+            hi=60.0_qp)
+        call cli%add_int("points", "300", "values of e on the stability map", lo=8, hi=100000)
+        call cli%add_int("max_steps", "20000000", "step budget of time stepping", lo=1)
+    end subroutine define_keys
+
+    !> The methods and settings compared; in_map marks those on the stability
+    !> map. Every other ODE tolerance is left out there (below e_c an ODE run
+    !> locates thousands of impacts, each by some 50 re-integrations), and so is
+    !> time stepping with h = 1e-5 (1e6 steps and more per scene).
+    subroutine method_list()
+        integer :: k
+        real(qp), parameter :: ode_tols(6) = [1.0e-3_qp, 1.0e-5_qp, 1.0e-7_qp, 1.0e-9_qp, &
+            1.0e-11_qp, 1.0e-13_qp]
+        real(qp), parameter :: rkf45_tols(3) = [1.0e-4_qp, 1.0e-8_qp, 1.0e-12_qp]
+        real(qp), parameter :: steps(5) = [1.0e-1_qp, 1.0e-2_qp, 1.0e-3_qp, 1.0e-4_qp, 1.0e-5_qp]
+        methods = [engines_of_each_kind(), &
+            new_method(method_engine, dp, tol=sqrt_tiny(dp)), &
+            new_method(method_absolute, dp), new_method(method_absolute, qp)]
+        in_map = [(.true., k=1, size(methods))]
+        do k = 1, size(ode_tols)
+            methods = [methods, new_method(method_ode, tol=ode_tols(k), stepper=stepper_rk8pd)]
+            in_map = [in_map, mod(k, 2) == 1]
+        end do
+        do k = 1, size(rkf45_tols)
+            methods = [methods, new_method(method_ode, tol=rkf45_tols(k), stepper=stepper_rkf45)]
+            in_map = [in_map, k == 2]
+        end do
+        do k = 1, size(steps)
+            methods = [methods, new_method(method_stepping, h=steps(k), max_steps=max_steps)]
+            in_map = [in_map, steps(k) >= 1.0e-4_qp]
+        end do
+    end subroutine method_list
+
+    !> methods_work_precision.tsv and methods_costs.tsv: every method on each
+    !> scene, timed, against the reference.
+    subroutine work_precision()
+        type(outcome_t) :: ref, run
+        type(comparison_t) :: cmp
+        type(scene_t) :: scene
+        real(qp) :: seconds, err
+        integer :: s, m, unit, unit_cost, runs, batches
+        open (newunit=unit, file=out_dir//"/methods_work_precision.tsv", status="replace", &
+            action="write")
+        open (newunit=unit_cost, file=out_dir//"/methods_costs.tsv", status="replace", &
+            action="write")
+        write (unit, "(a)") "scene"//tab//"e[1]"//tab//"e_minus_ec[1]"//tab//"label"//tab &
+            //"method"//tab &
+            //"kind"//tab//"setting[1|L/V]"//tab//"cpu_per_run[s]"//tab//"batches"//tab &
+            //"runs_per_batch"//tab//"collisions"//tab//"collisions_ref"//tab//"same_count" &
+            //tab//"same_sequence"//tab//"matched"//tab//"v_error[V]"//tab//"t_error[L/V]" &
+            //tab//"error[1]"//tab//"min_gap[L]"//tab//"steps"//tab//"status"//tab//"category"
+        write (unit_cost, "(a)") "e[1]"//tab//"label"//tab//"method"//tab//"kind"//tab &
+            //"setting[1|L/V]"//tab//"collisions_ref"//tab//"collisions"//tab &
+            //"ns_per_run[ns]"//tab//"ns_per_collision[ns]"//tab//"category"
+        do s = 1, size(scenes)
+            call scene_at(scenes(s), scene)
+            call reference_run(scene, ref)
+            do m = 1, size(methods)
+                call prepare(methods(m), scene)
+                call method_run(methods(m), run, record=.true.)
+                cmp = compare_outcomes(ref, run)
+                ! One number per run for the chart: velocities in units of v0,
+                ! times in units of L/v0 (L = max(d, a) = 1 here).
+                err = max(cmp%v_error/scene%v0, &
+                    cmp%t_error*scene%v0/max(scene%d, maxval(scene%a)))
+                call time_runs(methods(m), seconds, batches, runs)
+                write (unit, "(a)") itoa(s)//tab//str(scenes(s))//tab//str(scenes(s) - e_crit)//tab &
+                    //method_label(methods(m))//tab//method_name(methods(m))//tab &
+                    //kind_name(methods(m)%precision)//tab//str(method_setting(methods(m))) &
+                    //tab//str(seconds)//tab//itoa(batches)//tab//itoa(runs)//tab//itoa(run%n) &
+                    //tab//itoa(ref%n)//tab//yes_no(cmp%same_count)//tab &
+                    //yes_no(cmp%same_sequence)//tab//itoa(cmp%n_matched)//tab &
+                    //str(cmp%v_error)//tab//str(cmp%t_error)//tab//str(err)//tab &
+                    //str(run%min_gap)//tab//itoa(run%steps)//tab//status_word(run%status) &
+                    //tab//category_word(classify(ref, run, method_v_tol(methods(m), scene%v0)))
+                if (in_costs(s)) then
+                    write (unit_cost, "(a)") str(scenes(s))//tab//method_label(methods(m))//tab &
+                        //method_name(methods(m))//tab//kind_name(methods(m)%precision)//tab &
+                        //str(method_setting(methods(m)))//tab//itoa(ref%n)//tab//itoa(run%n) &
+                        //tab//str(1.0e9_qp*seconds)//tab//str(1.0e9_qp*seconds/max(1, run%n)) &
+                        //tab//category_word(classify(ref, run, &
+                        method_v_tol(methods(m), scene%v0)))
+                end if
+            end do
+        end do
+        close (unit)
+        close (unit_cost)
+    end subroutine work_precision
+
+    !> methods_stability.tsv: the category of each method on the map over e,
+    !> from 1 down through e_c to 0, log-spaced in |e - e_c| from 1e-7 on.
+    subroutine stability()
+        type(outcome_t) :: ref, run
+        type(scene_t) :: scene
+        real(qp), allocatable :: es(:)
+        real(qp) :: lo, hi
+        integer :: n_above, n_below, j, m, unit, row, category
+        n_below = points/4
+        n_above = points - n_below
+        allocate (es(points))
+        lo = log10(closest)
+        hi = log10(1.0_qp - e_crit)
+        do j = 1, n_above
+            es(j) = e_crit + 10.0_qp**(hi + (lo - hi)*(j - 1)/(n_above - 1))
+        end do
+        es(1) = 1.0_qp
+        hi = log10(e_crit)
+        do j = 1, n_below
+            es(n_above + j) = e_crit - 10.0_qp**(lo + (hi - lo)*(j - 1)/(n_below - 1))
+        end do
+        es(points) = 0.0_qp
+        open (newunit=unit, file=out_dir//"/methods_stability.tsv", status="replace", &
+            action="write")
+        write (unit, "(a)") "row"//tab//"label"//tab//"e[1]"//tab//"e_minus_ec[1]"//tab &
+            //"category_code"//tab//"category"//tab//"collisions"//tab//"collisions_ref"//tab &
+            //"status"//tab//"status_ref"
+        do j = 1, points
+            call scene_at(es(j), scene)
+            call reference_run(scene, ref)
+            row = 0
+            do m = 1, size(methods)
+                if (.not. in_map(m)) cycle
+                row = row + 1
+                call prepare(methods(m), scene)
+                call method_run(methods(m), run, record=.true.)
+                category = classify(ref, run, method_v_tol(methods(m), scene%v0))
+                write (unit, "(a)") itoa(row)//tab//method_label(methods(m))//tab//str(es(j)) &
+                    //tab//str(es(j) - e_crit)//tab//itoa(category)//tab &
+                    //category_word(category)//tab//itoa(run%n)//tab//itoa(ref%n)//tab &
+                    //status_word(run%status)//tab//status_word(ref%status)
+            end do
+        end do
+        close (unit)
+    end subroutine stability
+
+    !> methods_min_distance.tsv: for each precision of the engine (and of the
+    !> absolute method), the smallest e - e_c = 10^-k, k = 1, 2, ..., down to
+    !> which every decade gives the reference's collision sequence; then a
+    !> bisection in log10(e - e_c) within the next decade for the boundary.
+    subroutine min_distance()
+        type(method_t), allocatable :: chosen(:)
+        type(outcome_t) :: ref, run
+        type(scene_t) :: scene
+        real(qp) :: right_log, wrong_log, mid_log
+        integer :: m, k, k_right, n_right, unit, j, ref_limit
+        logical :: reliable
+        chosen = [engines_of_each_kind(), engines_with_tiny_tol(), &
+            new_method(method_absolute, dp), new_method(method_absolute, qp)]
+        ! The reference itself holds to the decade where it still ends normally.
+        ref_limit = 0
+        do k = 1, max_decade
+            call scene_at(e_crit + 10.0_qp**(-k), scene)
+            call reference_run(scene, ref)
+            if (ref%status /= status_normal) exit
+            ref_limit = k
+        end do
+        open (newunit=unit, file=out_dir//"/methods_min_distance.tsv", status="replace", &
+            action="write")
+        write (unit, "(a)") "label"//tab//"method"//tab//"kind"//tab//"epsilon[1]"//tab &
+            //"min_distance_decade[1]"//tab//"collisions_there"//tab &
+            //"min_distance_bisected[1]"//tab//"reference_limit[1]"
+        do m = 1, size(chosen)
+            k_right = 0
+            n_right = 0
+            do k = 1, ref_limit
+                if (.not. right_at(chosen(m), -real(k, qp), run)) exit
+                k_right = k
+                n_right = run%n
+            end do
+            right_log = -real(k_right, qp)
+            wrong_log = right_log - 1
+            reliable = k_right < ref_limit
+            if (k_right > 0 .and. reliable) then
+                do j = 1, refine_steps
+                    mid_log = 0.5_qp*(right_log + wrong_log)
+                    if (right_at(chosen(m), mid_log, run)) then
+                        right_log = mid_log
+                    else
+                        wrong_log = mid_log
+                    end if
+                end do
+            end if
+            write (unit, "(a)") method_label(chosen(m))//tab//method_name(chosen(m))//tab &
+                //kind_name(chosen(m)%precision)//tab//str(method_setting(chosen(m)))//tab &
+                //distance_str(-real(k_right, qp), k_right > 0)//tab//itoa(n_right)//tab &
+                //distance_str(right_log, k_right > 0 .and. reliable)//tab &
+                //str(10.0_qp**(-ref_limit))
+        end do
+        close (unit)
+    end subroutine min_distance
+
+    !> The engine in every kind built, with its kind's epsilon as tolerance.
+    function engines_of_each_kind() result(engines)
+        type(method_t), allocatable :: engines(:)
+        integer :: k
+        engines = [(new_method(method_engine, built_kinds(k)%precision), &
+            k = 1, size(built_kinds))]
+    end function engines_of_each_kind
+
+    !> The engine in every kind built narrower than the reference's (the
+    !> widest, last of built_kinds), with
+    !> tol = sqrt(tiny) of its kind: how far relative variables reach.
+    function engines_with_tiny_tol() result(engines)
+        type(method_t), allocatable :: engines(:)
+        integer :: k
+        engines = [(new_method(method_engine, built_kinds(k)%precision, &
+            tol=built_kinds(k)%sqrt_tiny), k = 1, size(built_kinds) - 1)]
+    end function engines_with_tiny_tol
+
+    !> sqrt(tiny) of a kind built, in real128.
+    pure real(qp) function sqrt_tiny(precision)
+        integer, intent(in) :: precision
+        type(kind_info_t) :: info
+        info = kind_info(precision)
+        sqrt_tiny = info%sqrt_tiny
+    end function sqrt_tiny
+
+    !> Whether `method` gives the reference's collision sequence at
+    !> e = e_c + 10^log_distance.
+    logical function right_at(method, log_distance, run) result(right)
+        type(method_t), intent(inout) :: method
+        real(qp), intent(in) :: log_distance
+        type(outcome_t), intent(inout) :: run
+        type(outcome_t) :: ref
+        type(scene_t) :: scene
+        type(comparison_t) :: cmp
+        call scene_at(e_crit + 10.0_qp**log_distance, scene)
+        call reference_run(scene, ref)
+        call prepare(method, scene)
+        call method_run(method, run, record=.true.)
+        cmp = compare_outcomes(ref, run)
+        right = cmp%same_sequence .and. run%status == status_normal
+    end function right_at
+
+    !> Report the CPU time of the part just finished.
+    subroutine lap(part)
+        character(len=*), intent(in) :: part
+        real, save :: last = -1.0e0
+        real :: now
+        if (last < 0.0e0) last = clock_start
+        call cpu_time(now)
+        write (output_unit, "(a, f0.2, a)") name//": "//part//": ", now - last, " s"
+        last = now
+    end subroutine lap
+
+    !> methods_platform.tsv: where and how the times were taken.
+    subroutine platform()
+        integer :: unit
+        open (newunit=unit, file=out_dir//"/methods_platform.tsv", status="replace", &
+            action="write")
+        write (unit, "(a)") "item"//tab//"value"
+        write (unit, "(a)") "cpu_model"//tab//cpu_model()
+        write (unit, "(a)") "compiler_version"//tab//compiler_version()
+        write (unit, "(a)") "compiler_options"//tab//compiler_options()
+        write (unit, "(a)") "clock"//tab//"cpu_time (process CPU time), median over batches"
+        write (unit, "(a)") "batches"//tab//itoa(repeats)
+        write (unit, "(a)") "min_time[s]"//tab//str(real(min_time, dp))
+        write (unit, "(a)") "stepping_max_steps"//tab//itoa(max_steps)
+        close (unit)
+    end subroutine platform
+
+    !> Median CPU time per run of a prepared method: `batches` batches of
+    !> `runs` runs each, so that the whole takes about min_time; a run slower
+    !> than min_time is timed once. The batch size is calibrated by doubling
+    !> the number of runs until they take a measurable part of a batch, so that
+    !> a coarse clock cannot make a fast run look free.
+    subroutine time_runs(method, seconds, batches, runs)
+        type(method_t), intent(inout) :: method
+        real(qp), intent(out) :: seconds
+        integer, intent(out) :: batches, runs
+        type(outcome_t) :: run
+        real(dp), allocatable :: samples(:)
+        real(dp) :: t0, t1, single, batch_time
+        integer :: b, j
+        integer, parameter :: max_runs = 2**24
+        batch_time = real(min_time, dp)/repeats
+        call method_run(method, run)
+        runs = 1
+        do
+            call cpu_time(t0)
+            do j = 1, runs
+                call method_run(method, run)
+            end do
+            call cpu_time(t1)
+            if (t1 - t0 >= 0.25_dp*batch_time .or. runs >= max_runs) exit
+            runs = 2*runs
+        end do
+        single = (t1 - t0)/runs
+        if (runs == 1 .and. single >= real(min_time, dp)) then
+            seconds = single
+            batches = 1
+            return
+        end if
+        batches = repeats
+        runs = max(1, min(max_runs, ceiling(batch_time/max(single, tiny(1.0_dp)))))
+        allocate (samples(batches))
+        do b = 1, batches
+            call cpu_time(t0)
+            do j = 1, runs
+                call method_run(method, run)
+            end do
+            call cpu_time(t1)
+            samples(b) = (t1 - t0)/runs
+        end do
+        seconds = median(samples)
+    end subroutine time_runs
+
+    subroutine scene_at(e, scene)
+        real(qp), intent(in) :: e
+        type(scene_t), intent(out) :: scene
+        integer :: code
+        character(len=200) :: text
+        call scene_init(scene, code, text, e=e)
+        if (code /= status_normal) call fail(text)
+    end subroutine scene_at
+
+    subroutine reference_run(scene, ref)
+        type(scene_t), intent(in) :: scene
+        type(outcome_t), intent(inout) :: ref
+        type(method_t) :: method
+        method = reference_method()
+        call prepare(method, scene)
+        call method_run(method, ref, record=.true.)
+    end subroutine reference_run
+
+    subroutine prepare(method, scene)
+        type(method_t), intent(inout) :: method
+        type(scene_t), intent(in) :: scene
+        integer :: code
+        character(len=200) :: text
+        call method_prepare(method, scene, code, text)
+        if (code /= status_normal) call fail(text)
+    end subroutine prepare
+
+    pure function yes_no(flag) result(word)
+        logical, intent(in) :: flag
+        character(len=:), allocatable :: word
+        if (flag) then
+            word = "yes"
+        else
+            word = "no"
+        end if
+    end function yes_no
+
+    !> 10^log_distance with every digit, or nan where nothing was found.
+    function distance_str(log_distance, found) result(text)
+        real(qp), intent(in) :: log_distance
+        logical, intent(in) :: found
+        character(len=:), allocatable :: text
+        if (found) then
+            text = str(10.0_qp**log_distance)
+        else
+            text = "nan"
+        end if
+    end function distance_str
+
+end program c12_methods

@@ -1,0 +1,101 @@
+!> What every study program does with its command line, on the key registry
+!> of `sphere_row_args`: the key `out`, `--help` generated from the keys, the
+!> scene of the scene keys, and one line on stderr with exit status 2 for bad
+!> input.
+!>
+!> A study program registers its keys between `start_program` and
+!> `read_keys`:
+!>
+!>     call start_program(cli, "c12-b2", "C12 task b2: ...")
+!>     call add_scene_keys(cli, e_set_by="the grid of e")
+!>     call cli%add_int("n_grid", "1001", "points of the grid of e in [0, 1]", lo=2)
+!>     call read_keys(cli, scene)
+!>     n_grid = cli%get_int("n_grid")
+!>
+!> Programs only: the library reports errors by status or `error_t`, a
+!> program decides to stop, and these are the procedures it stops with.
+module sphere_row_study_cli
+    use sphere_row, only: scene_t, status_normal
+    use sphere_row_args, only: cli_t, read_command_line, scene_from_cli, add_scene_keys, &
+        fail_with => fail
+    use sphere_row_error, only: error_t, fatal_error
+    implicit none
+    private
+    public :: cli_t, add_scene_keys, start_program, read_keys, fail, stop_unless_normal
+
+    !> The running program's name, the prefix of its messages.
+    character(len=:), allocatable :: program_name
+    !> True if the program writes tables, into the directory of key `out`.
+    logical :: writes_tables = .true.
+
+    !> Stop with one line on stderr: from a text or from an `error_t`.
+    interface fail
+        module procedure fail_text
+        module procedure fail_error
+    end interface fail
+
+contains
+
+    !> Start the command line of program `name`: `about` is the paragraph of
+    !> its `--help` (lines separated by new_line), and the key `out` names the
+    !> directory of its tables unless `tables` is false.
+    subroutine start_program(cli, name, about, tables)
+        type(cli_t), intent(out) :: cli
+        character(len=*), intent(in) :: name, about
+        logical, intent(in), optional :: tables
+        program_name = name
+        cli%name = name
+        cli%about = about
+        writes_tables = .true.
+        if (present(tables)) writes_tables = tables
+        if (writes_tables) call cli%add_word("out", "results", &
+            "directory of the tables (made if missing)")
+    end subroutine start_program
+
+    !> Read the command line into the keys registered: `--help` prints the
+    !> usage made from them and stops, bad input fails. With `scene`, the
+    !> scene of the scene keys. The output directory must not be empty and
+    !> holds no quote, since it is handed to the shell to be made.
+    subroutine read_keys(cli, scene)
+        type(cli_t), intent(inout) :: cli
+        type(scene_t), intent(out), optional :: scene
+        type(error_t), allocatable :: error
+        character(len=:), allocatable :: out
+        if (cli%files) then
+            cli%synopsis = "[FILE] [key=value ...]"
+        else
+            cli%synopsis = "[key=value ...]"
+        end if
+        call read_command_line(cli)
+        if (writes_tables) then
+            out = cli%get_word("out")
+            if (scan(out, "'""") > 0) call fatal_error(error, "out = "//out &
+                //": allowed a directory name without quotes")
+        end if
+        if (.not. allocated(error) .and. present(scene)) call scene_from_cli(cli, scene, error)
+        if (allocated(error)) call fail_error(error)
+    end subroutine read_keys
+
+    !> One line on stderr, `program: text`, and exit status 2.
+    subroutine fail_text(text)
+        character(len=*), intent(in) :: text
+        type(error_t), allocatable :: error
+        call fatal_error(error, trim(text))
+        call fail_error(error)
+    end subroutine fail_text
+
+    !> One line on stderr, `program: message`, and exit status 2.
+    subroutine fail_error(error)
+        type(error_t), intent(in) :: error
+        if (.not. allocated(program_name)) program_name = "c12"
+        call fail_with(program_name, error)
+    end subroutine fail_error
+
+    !> fail(msg) unless `stat` is status_normal.
+    subroutine stop_unless_normal(stat, msg)
+        integer, intent(in) :: stat
+        character(len=*), intent(in) :: msg
+        if (stat /= status_normal) call fail_text(msg)
+    end subroutine stop_unless_normal
+
+end module sphere_row_study_cli

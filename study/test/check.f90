@@ -1,0 +1,16 @@
+!> Test driver of the study: runs every suite and ends with `N passed, N failed`.
+program check
+    use testsuite, only: run_tests
+    use test_study, only: collect_study
+    use test_monte_carlo, only: collect_monte_carlo
+    use test_methods, only: collect_methods
+    implicit none
+    integer :: passed, failed
+    passed = 0
+    failed = 0
+    call run_tests("study", collect_study(), passed, failed)
+    call run_tests("monte_carlo", collect_monte_carlo(), passed, failed)
+    call run_tests("methods", collect_methods(), passed, failed)
+    print "(i0, ' passed, ', i0, ' failed')", passed, failed
+    if (failed > 0) stop 1, quiet=.true.
+end program check

@@ -1,0 +1,556 @@
+!> Tests of the front door: one table of malformed inputs, each run against the
+!> real `sphere-row` executable and through the parser in this process, plus
+!> accepted inputs and the strict readers on their own.
+!>
+!> A row's argument list is written with blanks between arguments; inside an
+!> argument `\s` stands for a blank, `\n` for a line feed, `\t` for a tab and
+!> `\e` alone for an empty argument. Files named `F/...` are written by
+!> write_scene_files into build/test_front/.
+module test_front
+    use sphere_row, only: qp, scene_t, itoa
+    use sphere_row_args, only: cli_t, string_t, add_scene_keys, scene_from_cli, read_real, &
+        read_int, read_reals, is_real_text, is_int_text, printable, short_text
+    use sphere_row_error, only: input_error_t => error_t
+    use testsuite, only: error_t, unittest_t, new_unittest, check
+    use test_cli, only: program_path
+    implicit none
+    private
+    public :: collect_front, malformed_inputs, bad_case_t
+
+    character(len=*), parameter :: dir = "build/test_front"
+    character(len=*), parameter :: out_file = dir//"/out", err_file = dir//"/err"
+
+    !> One malformed input: the arguments, the exit status expected of
+    !> `sphere-row` and a text its one-line message must contain.
+    type :: bad_case_t
+        character(len=:), allocatable :: args
+        integer :: status = 2
+        character(len=:), allocatable :: expect
+    end type bad_case_t
+
+contains
+
+    !> The front door's tests.
+    function collect_front() result(tests)
+        type(unittest_t), allocatable :: tests(:)
+        tests = [ &
+            new_unittest("table_size", test_table_size), &
+            new_unittest("malformed_inputs_cli", test_malformed_cli), &
+            new_unittest("malformed_inputs_parser", test_malformed_parser), &
+            new_unittest("accepted_inputs", test_accepted), &
+            new_unittest("scene_file_and_overrides", test_scene_file), &
+            new_unittest("real_syntax", test_real_syntax), &
+            new_unittest("int_syntax", test_int_syntax), &
+            new_unittest("printable_and_short_text", test_printable), &
+            new_unittest("help_from_registry", test_help) &
+            ]
+    end function collect_front
+
+    pure function bad(args, status, expect) result(row)
+        character(len=*), intent(in) :: args, expect
+        integer, intent(in) :: status
+        type(bad_case_t) :: row
+        row%args = args
+        row%status = status
+        row%expect = expect
+    end function bad
+
+    !> Every malformed input the front door must refuse.
+    function malformed_inputs() result(rows)
+        type(bad_case_t), allocatable :: rows(:)
+        rows = [ &
+            ! numbers that list-directed input would take
+            bad("e=1-5", 2, "e = 1-5: not a number"), &
+            bad("v0=1+2", 2, "v0 = 1+2: not a number"), &
+            bad("d=2-3", 2, "d = 2-3: not a number"), &
+            bad("e=0.5q0", 2, "e = 0.5q0: not a number"), &
+            bad("e=0.5_16", 2, "e = 0.5_16: not a number"), &
+            bad("e=1,5", 2, "e = 1,5: not a number"), &
+            bad("e=1/2", 2, "e = 1/2: not a number"), &
+            bad("e=(0.5)", 2, "e = (0.5): not a number"), &
+            bad("e=.5.", 2, "e = .5.: not a number"), &
+            bad("e=0.5.1", 2, "e = 0.5.1: not a number"), &
+            ! not numbers at all
+            bad("e=abc", 2, "e = abc: not a number"), &
+            bad("e=nan", 2, "e = nan: not a number"), &
+            bad("e=NaN", 2, "e = NaN: not a number"), &
+            bad("v0=inf", 2, "v0 = inf: not a number"), &
+            bad("v0=Infinity", 2, "v0 = Infinity: not a number"), &
+            bad("v0=-inf", 2, "v0 = -inf: not a number"), &
+            bad("e=", 2, "e = : no value"), &
+            bad("e=.", 2, "e = .: not a number"), &
+            bad("e=+", 2, "e = +: not a number"), &
+            bad("e=1e", 2, "e = 1e: not a number"), &
+            bad("e=1e+", 2, "e = 1e+: not a number"), &
+            bad("e=e5", 2, "e = e5: not a number"), &
+            bad("e=0x1p-1", 2, "e = 0x1p-1: not a number"), &
+            bad("e=--0.5", 2, "e = --0.5: not a number"), &
+            bad("e=0.5e1.0", 2, "e = 0.5e1.0: not a number"), &
+            bad("e=0.5\s", 2, "e = 0.5 : not a number"), &
+            bad("e=\s0.5", 2, "e =  0.5: not a number"), &
+            bad("e=0.5\n1", 2, "e = 0.5\n1: not a number"), &
+            bad("e=0.5\t", 2, "e = 0.5\t: not a number"), &
+            bad("e="//repeat("7x", 600), 2, "e = "//repeat("7x", 600)//": not a number"), &
+            ! numbers real(16) cannot hold
+            bad("v0=1e5000", 2, "v0 = 1e5000: beyond the largest real(16)"), &
+            bad("v0=-1e5000", 2, "v0 = -1e5000: beyond the largest real(16)"), &
+            bad("d=1d5000", 2, "d = 1d5000: beyond the largest real(16)"), &
+            bad("tol=1e-5000", 2, "tol = 1e-5000: too small for real(16)"), &
+            bad("v0=1e-99999", 2, "v0 = 1e-99999: too small for real(16)"), &
+            ! out of range
+            bad("e=1.5", 2, "e = 1.5: allowed 0 <= e <= 1"), &
+            bad("e=-0.1", 2, "e = -0.1: allowed 0 <= e <= 1"), &
+            bad("v0=0", 2, "v0 = 0: allowed v0 > 0"), &
+            bad("v0=-1", 2, "v0 = -1: allowed v0 > 0"), &
+            bad("d=-1", 2, "d = -1: allowed d >= 0"), &
+            bad("a=-1", 2, "a = -1: allowed a >= 0"), &
+            bad("tol=1", 2, "tol = 1: allowed 0 <= tol < 1"), &
+            bad("tol=-1e-3", 2, "tol = -1e-3: allowed 0 <= tol < 1"), &
+            ! integers
+            bad("p=1", 2, "p = 1: allowed an integer 2 <= p <= 1000000"), &
+            bad("p=2.5", 2, "p = 2.5: not an integer"), &
+            bad("p=4e0", 2, "p = 4e0: not an integer"), &
+            bad("p=0x4", 2, "p = 0x4: not an integer"), &
+            bad("p=", 2, "p = : no value"), &
+            bad("p=99999999999", 2, "p = 99999999999: beyond the largest integer"), &
+            bad("p=1000001", 2, "p = 1000001: allowed an integer 2 <= p <= 1000000"), &
+            bad("max_collisions=0", 2, "max_collisions = 0: allowed an integer"), &
+            bad("max_collisions=1.5", 2, "max_collisions = 1.5: not an integer"), &
+            bad("max_collisions=-5", 2, "max_collisions = -5: allowed"), &
+            ! lists
+            bad("masses=1,1,1", 2, "masses = 1,1,1: 3 values given; allowed exactly p = 4"), &
+            bad("masses=1,0,1,1", 2, "masses = 1,0,1,1: value 2 is 0; allowed"), &
+            bad("masses=1,x,1,1", 2, "masses = 1,x,1,1: value 2 = x: not a number"), &
+            bad("masses=1,,1,1", 2, "masses = 1,,1,1: value 2 is empty"), &
+            bad("masses=1,1,1,1,", 2, "masses = 1,1,1,1,: value 5 is empty"), &
+            bad("masses=,1,1,1", 2, "masses = ,1,1,1: value 1 is empty"), &
+            bad("masses=1;1;1;1", 2, "masses = 1;1;1;1: value 1"), &
+            bad("masses=1\s1\s1\s1", 2, "masses = 1 1 1 1: value 1"), &
+            bad("masses=1,1e5000,1,1", 2, "value 2 = 1e5000: beyond the largest real(16)"), &
+            bad("gaps=1,1", 2, "gaps = 1,1: 2 values given; allowed exactly p-1 = 3"), &
+            bad("gaps=1,-1,1", 2, "gaps = 1,-1,1: value 2 is -1; allowed"), &
+            bad("gaps=1,nan,1", 2, "gaps = 1,nan,1: value 2 = nan: not a number"), &
+            bad("p=3 gaps=1,1,1", 2, "gaps = 1,1,1: 3 values given; allowed exactly p-1 = 2"), &
+            ! keys given twice, or with the key that overrides them
+            bad("e=0.5 e=0.6", 2, "e = 0.6: e is given twice (first e = 0.5)"), &
+            bad("p=4 p=4", 2, "p = 4: p is given twice"), &
+            bad("events=yes events=no", 2, "events = no: events is given twice"), &
+            bad("gaps=1,1,1 a=-1", 2, "a = -1"), &
+            bad("gaps=1,1,1 a=1", 2, "a = 1: gaps = 1,1,1 is given too"), &
+            bad("a=1 gaps=1,1,1", 2, "a = 1: gaps = 1,1,1 is given too"), &
+            ! unknown keys and stray arguments
+            bad("foo=1", 2, "foo = 1: unknown key; allowed keys: p, e,"), &
+            bad("E=0.5", 2, "E = 0.5: unknown key"), &
+            bad("\se=0.5", 2, " e = 0.5: unknown key"), &
+            bad("-e=0.5", 2, "-e = 0.5: unknown key"), &
+            bad("=0.5", 2, "argument '=0.5': no key before '='"), &
+            bad("--foo", 2, "argument '--foo': allowed key=value"), &
+            bad("\e", 2, "argument '': allowed key=value"), &
+            bad("events=maybe", 2, "events = maybe: allowed yes or no"), &
+            bad("events=Yes", 2, "events = Yes: allowed yes or no"), &
+            bad("events=", 2, "events = : allowed yes or no"), &
+            ! scenes whose scales real(16) cannot hold
+            bad("d=1e4932", 2, "d = 1e4932: the row's length"), &
+            bad("a=1e4932", 2, "a = 1e4932: the row's length"), &
+            bad("gaps=1e4932,1e4932,1", 2, "gaps = 1e4932,1e4932,1: the row's length"), &
+            bad("gaps=1e4000,1,1 v0=1e-1000", 2, "v0 = 1e-1000: the time scale"), &
+            bad("v0=1e4932", 2, "v0 = 1e4932: the velocity scale"), &
+            bad("masses=1e-4000,1e4000,1,1", 2, "masses = 1e-4000,1e4000,1,1: sum(masses)"), &
+            bad("gaps=1e4931,1e4931,1e4931", 2, "gaps = 1e4931,1e4931,1e4931: the positions'"), &
+            bad("masses=1e-2000,1,1,1 gaps=1e2933,1,1", 2, "masses = 1e-2000,1,1,1: the pos"), &
+            ! scene files
+            bad("no_such_file.nml", 2, "file = no_such_file.nml: cannot be opened"), &
+            bad("F/good.nml F/good.nml", 2, "a second scene file"), &
+            bad("F/element.nml", 2, "element.nml': masses(4) = 2: not a key name"), &
+            bad("F/list_directed.nml", 2, "list_directed.nml': e = 1-5: not a number"), &
+            bad("F/repeat.nml", 2, "repeat.nml': masses = 4*1: value 1 = 4*1"), &
+            bad("F/null.nml", 2, "null.nml': masses = 1,,1,1: an empty value"), &
+            bad("F/unknown.nml", 2, "unknown.nml': foo = 1: unknown key"), &
+            bad("F/twice.nml", 2, "twice.nml': e = 0.6: e is given twice in the file"), &
+            bad("F/events.nml", 2, "events.nml': events = yes: unknown key"), &
+            bad("F/no_group.nml", 2, "no_group.nml': begins with 'e=0.5'"), &
+            bad("F/other_group.nml", 2, "other_group.nml': begins with '&other'"), &
+            bad("F/unended.nml", 2, "unended.nml': no '/' ends the group"), &
+            bad("F/after_end.nml", 2, "after_end.nml': text after the '/'"), &
+            bad("F/two_values.nml", 2, "two_values.nml': e = 0.5, 0.6: 2 values"), &
+            bad("F/empty.nml", 2, "empty.nml': empty"), &
+            bad("F/range.nml e=0.5", 2, "range.nml': e = 2: allowed 0 <= e <= 1"), &
+            bad("F/gaps.nml a=2", 2, "a = 2: gaps = 1,2,3 is given too"), &
+            bad("F/scale.nml", 2, "scale.nml': d = 1e4932: the row's length"), &
+            bad("F", 2, "test_front': empty (or not a file)") &
+            ]
+    end function malformed_inputs
+
+    !> The scene files the table names.
+    subroutine write_scene_files()
+        call execute_command_line("mkdir -p "//dir)
+        call write_file("good.nml", "&scene p=6, e=1.0, masses=1,1,1,1,1,1 /")
+        call write_file("element.nml", "&scene masses(4)=2 /")
+        call write_file("list_directed.nml", "&scene e=1-5 /")
+        call write_file("repeat.nml", "&scene masses=4*1 /")
+        call write_file("null.nml", "&scene masses=1,,1,1 /")
+        call write_file("unknown.nml", "&scene foo=1 /")
+        call write_file("twice.nml", "&scene e=0.5, e=0.6 /")
+        call write_file("events.nml", "&scene events=yes /")
+        call write_file("no_group.nml", "e=0.5")
+        call write_file("other_group.nml", "&other e=0.5 /")
+        call write_file("unended.nml", "&scene e=0.5")
+        call write_file("after_end.nml", "&scene e=0.5 / p=3")
+        call write_file("two_values.nml", "&scene e=0.5, 0.6 /")
+        call write_file("empty.nml", "")
+        call write_file("range.nml", "&scene e=2 /")
+        call write_file("gaps.nml", "&scene gaps=1,2,3 /")
+        call write_file("scale.nml", "&scene d=1e4932 /")
+        call write_file("commented.nml", "! the definition's row, heavier last sphere" &
+            //new_line("a")//"&SCENE  P = 4,  E = 0.5,   ! restitution"//new_line("a") &
+            //"  masses = 1, 1, 1,"//new_line("a")//"    2, gaps=1 2 3, /"//new_line("a"))
+    end subroutine write_scene_files
+
+    subroutine write_file(name, text)
+        character(len=*), intent(in) :: name, text
+        integer :: unit
+        open (newunit=unit, file=dir//"/"//name, status="replace", action="write")
+        if (len(text) > 0) write (unit, "(a)") text
+        close (unit)
+    end subroutine write_file
+
+    !> The arguments of a row (see the module's comment).
+    function decode(row) result(args)
+        character(len=*), intent(in) :: row
+        type(string_t), allocatable :: args(:)
+        integer :: start, i, n
+        n = 1
+        do i = 1, len(row)
+            if (row(i:i) == " ") n = n + 1
+        end do
+        allocate (args(n))
+        start = 1
+        do n = 1, size(args)
+            i = index(row(start:), " ")
+            if (i == 0) then
+                i = len(row) + 1
+            else
+                i = start + i - 1
+            end if
+            args(n)%s = unescape(row(start:i - 1))
+            start = i + 1
+        end do
+    end function decode
+
+    pure function unescape(text) result(arg)
+        character(len=*), intent(in) :: text
+        character(len=:), allocatable :: arg
+        integer :: i
+        arg = ""
+        if (text == "\e") return
+        if (len(text) >= 2) then
+            if (text(1:2) == "F/") then
+                arg = dir//"/"//text(3:)
+                return
+            end if
+        end if
+        if (text == "F") then
+            arg = dir
+            return
+        end if
+        i = 1
+        do while (i <= len(text))
+            if (text(i:i) == "\" .and. i < len(text)) then
+                select case (text(i + 1:i + 1))
+                case ("s")
+                    arg = arg//" "
+                case ("n")
+                    arg = arg//new_line("a")
+                case ("t")
+                    arg = arg//achar(9)
+                case default
+                    arg = arg//text(i:i + 1)
+                end select
+                i = i + 2
+            else
+                arg = arg//text(i:i)
+                i = i + 1
+            end if
+        end do
+    end function unescape
+
+    !> The arguments quoted for the shell.
+    pure function quoted(args) result(line)
+        type(string_t), intent(in) :: args(:)
+        character(len=:), allocatable :: line
+        integer :: i, j
+        line = ""
+        do i = 1, size(args)
+            line = line//" '"
+            do j = 1, len(args(i)%s)
+                if (args(i)%s(j:j) == "'") then
+                    line = line//"'\''"
+                else
+                    line = line//args(i)%s(j:j)
+                end if
+            end do
+            line = line//"'"
+        end do
+    end function quoted
+
+    !> Path of an executable linked with the library as it is now: fpm 0.12
+    !> relinks an executable only when its own sources change, so after an
+    !> edit of the library alone `fpm test` would run the old one. Removing it
+    !> makes fpm link it again.
+    function fresh_program_path(name) result(path)
+        character(len=*), intent(in) :: name
+        character(len=:), allocatable :: path
+        integer :: unit, ios
+        path = program_path(name)
+        if (len(path) == 0) return
+        open (newunit=unit, file=path, status="old", action="read", iostat=ios)
+        if (ios == 0) close (unit, status="delete")
+        path = program_path(name)
+    end function fresh_program_path
+
+    !> A registry like the CLI's: the scene keys and `events`.
+    subroutine cli_keys(cli)
+        type(cli_t), intent(out) :: cli
+        cli%name = "sphere-row"
+        cli%synopsis = "[FILE] [key=value ...]"
+        call add_scene_keys(cli)
+        call cli%add_flag("events", "no", "yes adds the event table")
+    end subroutine cli_keys
+
+    !> The table holds at least 60 malformed inputs, each expecting exit status 2.
+    subroutine test_table_size(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(bad_case_t), allocatable :: rows(:)
+        integer :: i
+        rows = malformed_inputs()
+        call check(error, size(rows) >= 60, "fewer than 60 malformed inputs")
+        do i = 1, size(rows)
+            call check(error, rows(i)%status == 2, rows(i)%args//": expected status not 2")
+        end do
+    end subroutine test_table_size
+
+    !> Each malformed input, given to the real `sphere-row`: the expected exit
+    !> status, nothing on stdout, one line on stderr holding the expected text.
+    subroutine test_malformed_cli(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(bad_case_t), allocatable :: rows(:)
+        character(len=:), allocatable :: path, out, err
+        integer :: i, status
+        call write_scene_files()
+        path = fresh_program_path("sphere-row")
+        call check(error, len(path) > 0, "sphere-row: no executable found")
+        if (allocated(error)) return
+        rows = malformed_inputs()
+        do i = 1, size(rows)
+            call execute_command_line(path//quoted(decode(rows(i)%args))//" > "//out_file &
+                //" 2> "//err_file, exitstat=status)
+            out = slurp(out_file)
+            err = slurp(err_file)
+            call check(error, status == rows(i)%status, rows(i)%args//": exit status " &
+                //itoa(status))
+            call check(error, len(out) == 0, rows(i)%args//": wrote to stdout: "//out)
+            call check(error, count_lines(err) == 1, rows(i)%args//": not one stderr line: " &
+                //err)
+            call check(error, index(err, "sphere-row: ") == 1, rows(i)%args &
+                //": message does not begin with the program's name: "//err)
+            call check(error, index(err, rows(i)%expect) > 0, rows(i)%args &
+                //": message lacks '"//rows(i)%expect//"': "//err)
+            if (allocated(error)) return
+        end do
+    end subroutine test_malformed_cli
+
+    !> The same table through the parser and scene_from_cli in this process:
+    !> an error whose message holds the expected text and no control character.
+    subroutine test_malformed_parser(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(bad_case_t), allocatable :: rows(:)
+        type(input_error_t), allocatable :: refused
+        type(cli_t) :: cli
+        type(scene_t) :: scene
+        integer :: i
+        call write_scene_files()
+        rows = malformed_inputs()
+        do i = 1, size(rows)
+            call cli_keys(cli)
+            call cli%parse(decode(rows(i)%args), refused)
+            if (.not. allocated(refused)) call scene_from_cli(cli, scene, refused)
+            call check(error, allocated(refused), rows(i)%args//": accepted by the parser")
+            if (allocated(error)) return
+            call check(error, index(refused%message, rows(i)%expect) > 0, rows(i)%args &
+                //": message lacks '"//rows(i)%expect//"': "//refused%message)
+            call check(error, printable(refused%message) == refused%message, rows(i)%args &
+                //": message holds a control character")
+            if (allocated(error)) return
+        end do
+    end subroutine test_malformed_parser
+
+    !> Inputs in every allowed spelling give the values they say.
+    subroutine test_accepted(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(input_error_t), allocatable :: refused
+        type(cli_t) :: cli
+        type(scene_t) :: scene
+        call cli_keys(cli)
+        call cli%parse(decode("e=.5 v0=2.5d0 d=+1E+2 tol=0 p=+0005 masses=1,2.,3e0,4D-0,5" &
+            //" max_collisions=007 events=yes"), refused)
+        call check(error, .not. allocated(refused), "spellings refused: "//message(refused))
+        if (allocated(error)) return
+        call scene_from_cli(cli, scene, refused)
+        call check(error, .not. allocated(refused), "scene refused: "//message(refused))
+        if (allocated(error)) return
+        call check(error, scene%e == 0.5_qp .and. scene%v0 == 2.5_qp .and. scene%d == 100.0_qp &
+            .and. scene%tol == 0.0_qp .and. scene%p == 5 .and. scene%max_collisions == 7, &
+            "values of e, v0, d, tol, p, max_collisions")
+        call check(error, all(scene%m == [1.0_qp, 2.0_qp, 3.0_qp, 4.0_qp, 5.0_qp]), "masses")
+        call check(error, all(scene%a == 1.0_qp), "default gaps")
+        call check(error, cli%get_flag("events"), "events=yes")
+        ! defaults: the definition's scene, tol the kind's epsilon exactly
+        call cli_keys(cli)
+        call cli%parse([string_t ::], refused)
+        if (.not. allocated(refused)) call scene_from_cli(cli, scene, refused)
+        call check(error, .not. allocated(refused), "defaults refused: "//message(refused))
+        if (allocated(error)) return
+        call check(error, scene%p == 4 .and. scene%e == 0.2_qp .and. scene%d == 1.0_qp .and. &
+            scene%v0 == 1.0_qp .and. scene%tol == epsilon(1.0_qp) .and. all(scene%a == 1.0_qp) &
+            .and. all(scene%m == 1.0_qp) .and. .not. cli%get_flag("events"), "defaults")
+        ! a subnormal tol is a number real(16) holds
+        call cli_keys(cli)
+        call cli%parse(decode("tol=1e-4940"), refused)
+        call check(error, .not. allocated(refused), "tol=1e-4940 refused: "//message(refused))
+    end subroutine test_accepted
+
+    !> A scene file with comments, upper case, blanks and line breaks; keys on
+    !> the command line override the file's.
+    subroutine test_scene_file(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(input_error_t), allocatable :: refused
+        type(cli_t) :: cli
+        type(scene_t) :: scene
+        call write_scene_files()
+        call cli_keys(cli)
+        call cli%parse(decode("F/commented.nml e=0.25"), refused)
+        if (.not. allocated(refused)) call scene_from_cli(cli, scene, refused)
+        call check(error, .not. allocated(refused), "commented.nml: "//message(refused))
+        if (allocated(error)) return
+        call check(error, scene%p == 4 .and. scene%e == 0.25_qp, "p from file, e from argument")
+        call check(error, all(scene%m == [1.0_qp, 1.0_qp, 1.0_qp, 2.0_qp]), "masses from file")
+        call check(error, all(scene%a == [1.0_qp, 2.0_qp, 3.0_qp]), "gaps from file")
+        call check(error, cli%given("gaps") .and. .not. cli%given("a"), "gaps given, a not")
+    end subroutine test_scene_file
+
+    !> The real syntax: what is a number and what is not.
+    subroutine test_real_syntax(error)
+        type(error_t), allocatable, intent(out) :: error
+        character(len=*), parameter :: good(*) = [character(len=12) :: "0", "-0", "+1.", &
+            ".5", "1.5", "1e5", "1E-5", "1d+5", "1D5", "-2.5e-3", "007", "1.e3"]
+        character(len=*), parameter :: wrong(*) = [character(len=12) :: ".", "+", "-", "e", &
+            "1e", "1e+", ".e1", "1-5", "1+2", "1.2.3", "1e5.0", "0x10", "nan", "inf", "1q5", &
+            "1,0", "++1", "1e--5", "1_16", "1.5f", "-.", "1e5e5"]
+        type(input_error_t), allocatable :: refused
+        real(qp) :: x
+        real(qp), allocatable :: xs(:)
+        integer :: i
+        do i = 1, size(good)
+            call check(error, is_real_text(trim(good(i))), trim(good(i))//" refused")
+        end do
+        do i = 1, size(wrong)
+            call check(error, .not. is_real_text(trim(wrong(i))), trim(wrong(i))//" accepted")
+        end do
+        call check(error, .not. is_real_text("1 ") .and. .not. is_real_text(" 1") .and. &
+            .not. is_real_text(""), "blanks or empty accepted")
+        call read_real("x", "-2.5e-3", x, refused)
+        call check(error, .not. allocated(refused) .and. x == -2.5e-3_qp, "-2.5e-3")
+        call read_real("x", "1.2e4933", x, refused)
+        call check(error, allocated(refused), "1.2e4933 accepted")
+        call read_reals("xs", "1,2.5,-3", xs, refused)
+        call check(error, .not. allocated(refused), "list refused")
+        if (allocated(error)) return
+        call check(error, size(xs) == 3 .and. all(xs == [1.0_qp, 2.5_qp, -3.0_qp]), "list values")
+    end subroutine test_real_syntax
+
+    !> The integer syntax and the range of the default integer.
+    subroutine test_int_syntax(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(input_error_t), allocatable :: refused
+        integer :: n
+        call check(error, is_int_text("12") .and. is_int_text("-3") .and. is_int_text("+0"), &
+            "integers refused")
+        call check(error, .not. (is_int_text("1.") .or. is_int_text("1e3") .or. &
+            is_int_text("+") .or. is_int_text("") .or. is_int_text("1 ")), "non-integers accepted")
+        call read_int("n", "2147483647", n, refused)
+        call check(error, .not. allocated(refused) .and. n == huge(n), "huge(n) refused")
+        call read_int("n", "-0000000000000000000000012", n, refused)
+        call check(error, .not. allocated(refused) .and. n == -12, "leading zeros")
+        call read_int("n", "2147483648", n, refused)
+        call check(error, allocated(refused), "huge(n) + 1 accepted")
+        call read_int("n", "123456789012345678901234567890", n, refused)
+        call check(error, allocated(refused), "30 digits accepted")
+    end subroutine test_int_syntax
+
+    !> Control characters are shown escaped; short_text reads back exactly.
+    subroutine test_printable(error)
+        type(error_t), allocatable, intent(out) :: error
+        real(qp) :: x
+        character(len=:), allocatable :: text
+        call check(error, printable("a"//new_line("a")//"b"//achar(9)//achar(0)) == &
+            "a\nb\t\x00", "printable: "//printable("a"//new_line("a")//"b"//achar(9)//achar(0)))
+        call check(error, short_text(0.2_qp) == "0.2" .and. short_text(1.0_qp) == "1" .and. &
+            short_text(1.0e6_qp) == "1000000", "short_text of 0.2, 1, 1e6: " &
+            //short_text(0.2_qp)//" "//short_text(1.0_qp)//" "//short_text(1.0e6_qp))
+        text = short_text(epsilon(1.0_qp))
+        read (text, *) x
+        call check(error, x == epsilon(1.0_qp), "short_text(epsilon) does not read back")
+        call check(error, short_text(huge(1.0_qp), 3, "down") == "1.18e4932", &
+            "huge rounded down: "//short_text(huge(1.0_qp), 3, "down"))
+    end subroutine test_printable
+
+    !> `--help` lists every registered key with its default and range.
+    subroutine test_help(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(cli_t) :: cli
+        character(len=:), allocatable :: text
+        call cli_keys(cli)
+        text = cli%usage()
+        call check(error, index(text, "usage: sphere-row [FILE]") == 1, "usage line")
+        call check(error, index(text, "  p=4 ") > 0 .and. index(text, "  e=0.2 ") > 0 .and. &
+            index(text, "  tol=1.93e-34 ") > 0 .and. index(text, "max_collisions=1000000") > 0 &
+            .and. index(text, "events=no") > 0 .and. index(text, "masses=m1,m2,...") > 0, &
+            "keys with defaults: "//text)
+        call check(error, index(text, "allowed 0 <= e <= 1") > 0 .and. &
+            index(text, "allowed v0 > 0") > 0 .and. index(text, "allowed 0 <= tol < 1") > 0, &
+            "ranges")
+    end subroutine test_help
+
+    function message(refused) result(text)
+        type(input_error_t), allocatable, intent(in) :: refused
+        character(len=:), allocatable :: text
+        text = ""
+        if (allocated(refused)) text = refused%message
+    end function message
+
+    function slurp(file) result(text)
+        character(len=*), intent(in) :: file
+        character(len=:), allocatable :: text
+        character(len=8000) :: line
+        integer :: unit, ios
+        text = ""
+        open (newunit=unit, file=file, status="old", action="read", iostat=ios)
+        if (ios /= 0) return
+        do
+            read (unit, "(a)", iostat=ios) line
+            if (ios /= 0) exit
+            text = text//trim(line)//new_line("a")
+        end do
+        close (unit)
+    end function slurp
+
+    pure integer function count_lines(text)
+        character(len=*), intent(in) :: text
+        integer :: i
+        count_lines = 0
+        do i = 1, len(text)
+            if (text(i:i) == new_line("a")) count_lines = count_lines + 1
+        end do
+    end function count_lines
+
+end module test_front
