@@ -42,10 +42,12 @@ C2 := $(RESULTS)/c2_ecdf.tsv $(RESULTS)/c2_histogram.tsv $(RESULTS)/c2_convergen
 METHODS := $(RESULTS)/methods_work_precision.tsv $(RESULTS)/methods_stability.tsv \
       $(RESULTS)/methods_min_distance.tsv $(RESULTS)/methods_costs.tsv \
       $(RESULTS)/methods_platform.tsv
-TABLES := $(A1) $(A2) $(B1) $(B2) $(C1) $(C2) $(METHODS)
+COLLAPSE := $(RESULTS)/collapse_survey.tsv $(RESULTS)/collapse_by_p.tsv \
+      $(RESULTS)/collapse_answers.tsv
+TABLES := $(A1) $(A2) $(B1) $(B2) $(C1) $(C2) $(METHODS) $(COLLAPSE)
 ANSWERS := $(filter %_answers.tsv,$(TABLES))
 
-FIGURES := a1_paths b1_n b1_critical b2_velocities c1_secant c2_ecdf c2_histogram \
+FIGURES := a1_paths b1_n b1_critical b2_velocities c1_secant c2_ecdf c2_histogram collapse_by_p \
            c2_convergence
 PNG := $(FIGURES:%=$(RESULTS)/%.png) $(RESULTS)/methods_work_precision.png \
        $(RESULTS)/methods_stability.png
@@ -134,6 +136,8 @@ $(C1) &: $(BUILD_STAMP)
 	$(call study_run,c12-c1)
 $(C2) &: $(BUILD_STAMP)
 	$(call study_run,c12-c2)
+$(COLLAPSE) &: $(BUILD_STAMP)
+	$(call study_run,c12-collapse)
 $(METHODS) &: $(BUILD_STAMP)
 	$(call study_run,c12-methods)
 
@@ -155,6 +159,7 @@ $(RESULTS)/b1_critical.png $(RESULTS)/b1_critical.svg: $(B1)
 $(RESULTS)/b2_velocities.png $(RESULTS)/b2_velocities.svg: $(B2) $(B1)
 $(RESULTS)/c1_secant.png $(RESULTS)/c1_secant.svg: $(C1)
 $(RESULTS)/c2_ecdf.png $(RESULTS)/c2_ecdf.svg: $(C2)
+$(RESULTS)/collapse_by_p.png $(RESULTS)/collapse_by_p.svg: $(COLLAPSE)
 $(RESULTS)/c2_histogram.png $(RESULTS)/c2_histogram.svg: $(C2)
 $(RESULTS)/c2_convergence.png $(RESULTS)/c2_convergence.svg: $(C2)
 

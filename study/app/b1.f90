@@ -96,9 +96,13 @@ program c12_b1
     !    the fine tolerance just below the simulated boundary follows the cycle
     !    for thousands of collisions; find its period inside the run and bisect
     !    where the cycle's rate map gets complex eigenvalues
+    !    (its limit is taken by the fallback alone, not as soon as the cycle is
+    !    certified: the run is wanted for its long tail of the cycle)
     e_lo = e_c_sim - 0.001_qp
     scene%e = e_lo
+    scene%closed_form_limits = .false.
     call simulate(scene, run, events)
+    scene%closed_form_limits = .true.
     call sequence_of(events, pairs, before_collapse=.true.)
     pairs = pairs(:3*size(pairs)/4)
     period = tail_period(pairs, 48, 24)
@@ -200,6 +204,7 @@ contains
     !> b1_intervals.tsv: the intervals between consecutive changes, each with its
     !> collision count and sequence; e_quasi is the top of the collapsed ones.
     subroutine write_intervals()
+        integer(8) :: last_class
         ! intervals between consecutive boundaries, each with its sequence
         call open_table(out, "b1_intervals.tsv", "e_low"//tab//"e_high"//tab//"width"//tab// &
             "collisions"//tab//"status"//tab//"sequence", unit, stat, msg)
@@ -230,6 +235,16 @@ contains
             end if
             n_intervals = n_intervals + 1
         end do
+        ! e = 1 itself is a point of its own (one collision per pair), apart
+        ! from the interval just below it
+        last_class = class_mid
+        call classify(1.0_qp, class_mid)
+        if (class_mid /= last_class) then
+            call sequence_of(events, pairs)
+            write (unit, "(a)") str(1.0_qp)//tab//str(1.0_qp)//tab//str(0.0_qp)//tab// &
+                itoa(run%n)//tab//status_word(run%status)//tab//sequence_text(pairs)
+            n_intervals = n_intervals + 1
+        end if
         close (unit)
     end subroutine write_intervals
 

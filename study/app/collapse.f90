@@ -30,9 +30,9 @@ program c12_collapse
         "Collapse in general rows: random rows run to their end with closed-form"//nl// &
         "collapse limits, and the first n_before of them with the fallback rule alone."//nl// &
         "Writes OUT/collapse_survey.tsv, OUT/collapse_by_p.tsv, OUT/collapse_answers.tsv.")
-    call cli%add_int("n", "2000", "random rows run with closed-form limits", lo=1)
-    call cli%add_int("n_before", "500", "of these, rows run with the fallback rule alone", lo=0)
-    call cli%add_int("cap", "20000", "collisions after which a run counts as unanswered", lo=1)
+    call cli%add_int("n", "1000", "random rows run with closed-form limits", lo=1)
+    call cli%add_int("n_before", "300", "of these, rows run with the fallback rule alone", lo=0)
+    call cli%add_int("cap", "10000", "collisions after which a run counts as unanswered", lo=1)
     call cli%add_int("seed", "12", "seed of the MT19937 stream of the rows", lo=0)
     call cli%add_int("p_max", "20", "largest row length drawn (p from 2)", lo=2)
     call read_keys(cli)
