@@ -176,7 +176,8 @@ contains
         integer :: stat, i
         character(len=200) :: msg
         do i = 1, size(e_values)
-            call scene_init(scene, stat, msg, p=5, e=e_values(i), gaps=[0.3_qp, 1.7_qp, 0.0_qp, 2.1_qp])
+            call scene_init(scene, stat, msg, p=5, e=e_values(i), &
+                gaps=[0.3_qp, 1.7_qp, 0.0_qp, 2.1_qp])
             call simulate(scene, plain)
             call simulate(scene, logged, log)
             call check(error, all(plain%x == logged%x) .and. all(plain%v == logged%v) .and. &

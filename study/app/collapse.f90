@@ -4,6 +4,7 @@
 !> fallback rule alone; how many end with an answer, how many collisions
 !> that takes, and whether every invariant holds.
 program c12_collapse
+    use, intrinsic :: iso_fortran_env, only: int64
     use sphere_row, only: qp, scene_t, run_t, simulate, str, itoa, status_max_collisions
     use sphere_row_survey, only: survey_t, survey_open, survey_close, survey_scene, &
         check_invariants
@@ -21,7 +22,7 @@ program c12_collapse
     integer :: n, n_before, cap, seed, p_max
     ! per rule: scenes, answered, invariant failures, collisions and cpu
     integer :: scenes(2), answered(2), broken(2)
-    integer(8) :: collisions(2)
+    integer(int64) :: collisions(2)
     real :: cpu_max(2), cpu_sum(2)
     ! per p, closed-form rule: scenes and answered
     integer, allocatable :: by_p(:, :)
@@ -76,7 +77,7 @@ contains
         type(scene_t), intent(in) :: scene
         integer, intent(in) :: rule
         type(run_t) :: run
-        character(len=40) :: why
+        character(len=:), allocatable :: why
         real :: t0, t1
         call cpu_time(t0)
         call simulate(scene, run)

@@ -82,7 +82,7 @@ contains
         type(scene_t), intent(in) :: scene
         type(run_t), intent(in) :: run
         real(qp), intent(in) :: slack
-        character(len=*), intent(out) :: why
+        character(len=:), allocatable, intent(out) :: why
         real(qp) :: v0(scene%p), p_scale, e_start
         why = ""
         v0 = 0.0_qp
