@@ -2,7 +2,8 @@
 program sphere_row_main
     use, intrinsic :: iso_fortran_env, only: output_unit
     use sphere_row, only: qp, scene_t, run_t, event_log_t, simulate, str, status_word, &
-        status_invalid, event_collision, event_collapse, itoa
+        status_invalid, event_collision, event_collapse, itoa, auto_t, simulate_auto, &
+        simulate_in_dp
     use sphere_row_args, only: cli_t, add_scene_keys, scene_from_cli, read_command_line, fail
     use sphere_row_error, only: error_t, fatal_error
     implicit none
@@ -11,18 +12,29 @@ program sphere_row_main
     type(run_t) :: run
     type(event_log_t) :: log
     type(error_t), allocatable :: error
+    type(auto_t) :: auto
     logical :: events
+    character(len=:), allocatable :: precision
 
     call define_keys()
     call read_command_line(cli)
     call scene_from_cli(cli, scene, error)
     if (allocated(error)) call fail(cli%name, error)
     events = cli%get_flag("events")
-    if (events) then
-        call simulate(scene, run, log)
-    else
-        call simulate(scene, run)
-    end if
+    call choose_precision(error)
+    if (allocated(error)) call fail(cli%name, error)
+    select case (precision)
+    case ("auto")
+        call simulate_auto(scene, run, auto)
+    case ("dp")
+        call simulate_in_dp(scene, run)
+    case default
+        if (events) then
+            call simulate(scene, run, log)
+        else
+            call simulate(scene, run)
+        end if
+    end select
     call check_run(error)
     if (allocated(error)) call fail(cli%name, error)
     call write_run()
@@ -42,7 +54,23 @@ contains
             "positions x1..xp and gaps y1..y(p-1)."
         call add_scene_keys(cli)
         call cli%add_flag("events", "no", "yes adds the event table (TSV with a header row)")
+        call cli%add_word("precision", "qp", "qp: real(16); dp: real(8); auto: real(8) where" &
+            //" a rounding certificate holds, else real(16)")
     end subroutine define_keys
+
+    !> The precision asked for: qp, dp or auto; the event table only with qp.
+    subroutine choose_precision(error)
+        type(error_t), allocatable, intent(out) :: error
+        precision = cli%get_word("precision")
+        select case (precision)
+        case ("qp", "dp", "auto")
+        case default
+            call fatal_error(error, "precision = "//precision//": allowed qp, dp or auto")
+            return
+        end select
+        if (events .and. precision /= "qp") call fatal_error(error, "events = yes with " &
+            //"precision = "//precision//": allowed only with precision = qp")
+    end subroutine choose_precision
 
     !> Refuse a run the engine did not accept, or one whose output would hold
     !> a number that is not finite (the scene checks are meant to make that
@@ -86,6 +114,15 @@ contains
         write (output_unit, "(a, 1x, i0)") "collisions", run%n
         write (output_unit, "(a, 1x, a)") "t_end", str(run%t_end)
         write (output_unit, "(a, 1x, a)") "status", status_word(run%status)
+        if (precision == "auto") then
+            write (output_unit, "(a, 1x, a)") "precision", auto%answered
+            write (output_unit, "(a, 1x, a)") "certified", merge("yes", "no ", auto%certified)
+            if (auto%certified) write (output_unit, "(a, 1x, a)") "v_bound", str(auto%v_bound)
+            if (auto%answered /= "dp") write (output_unit, "(a, 1x, a)") "not_dp", &
+                auto%why_not_dp
+        else
+            write (output_unit, "(a, 1x, a)") "precision", precision
+        end if
         if (run%collapses > 0) then
             write (output_unit, "(a, 1x, i0)") "collapses", run%collapses
             write (output_unit, "(a, 1x, i0)") "closed_form_limits", run%closed_limits

@@ -1,0 +1,124 @@
+!> The precision a scene needs, chosen per scene with a certificate.
+!>
+!> `simulate_auto` runs a real128 scene first in real64 with the rounding
+!> certificate of simulate_certified (every decision of the run beats a
+!> running bound on the rounding error): if it holds, real64 has taken the
+!> decisions exact arithmetic takes, and its results lie within the bounds of
+!> the exact ones. Otherwise the scene runs in real128 with the engine's full
+!> rules, and the certificate is applied there too.
+module sphere_row_auto
+    use sphere_row_kinds, only: dp, qp
+    use sphere_row_engine_qp, only: scene_t, run_t, bounds_t, simulate_wp, &
+        simulate_certified_wp
+    use sphere_row_engine_dp, only: scene_dp_t => scene_t, run_dp_t => run_t, &
+        bounds_dp_t => bounds_t, certified_dp => simulate_certified_wp, &
+        simulate_dp => simulate_wp
+    implicit none
+    private
+    public :: auto_t, simulate_auto, simulate_in_dp
+
+    !> Which precision answered a scene and how far its results may be from
+    !> exact arithmetic's.
+    type :: auto_t
+        !> "dp" or "qp".
+        character(len=2) :: answered = "qp"
+        !> True if the answering run's certificate holds.
+        logical :: certified = .false.
+        !> Largest bound on a final velocity [v0 units of the scene] (0 if not
+        !> certified), and why the real64 run was not enough (blank if it was).
+        real(qp) :: v_bound = 0.0_qp
+        character(len=:), allocatable :: why_not_dp
+    end type auto_t
+
+contains
+
+    !> Run `scene` in the precision it needs; `run` holds the answer in
+    !> real128 whichever kind computed it.
+    subroutine simulate_auto(scene, run, auto)
+        type(scene_t), intent(in) :: scene
+        type(run_t), intent(inout) :: run
+        type(auto_t), intent(out) :: auto
+        type(scene_dp_t) :: low
+        type(run_dp_t) :: run_low
+        type(bounds_dp_t) :: bounds_low
+        type(bounds_t) :: bounds
+        type(run_t) :: check
+        auto%why_not_dp = "the scene's values are beyond real64"
+        if (fits_dp(scene)) then
+            call to_dp(scene, low)
+            call certified_dp(low, run_low, bounds_low)
+            auto%why_not_dp = bounds_low%why
+            if (bounds_low%certified) then
+                call from_dp(run_low, run)
+                auto%answered = "dp"
+                auto%certified = .true.
+                auto%v_bound = real(maxval(bounds_low%v), qp)
+                return
+            end if
+        end if
+        call simulate_wp(scene, run)
+        auto%answered = "qp"
+        call simulate_certified_wp(scene, check, bounds)
+        auto%certified = bounds%certified .and. check%n == run%n .and. check%status == run%status
+        if (auto%certified) auto%v_bound = maxval(bounds%v)
+    end subroutine simulate_auto
+
+    !> Run `scene` in real64 with the engine's full rules (no certificate);
+    !> `run` holds the answer in real128.
+    subroutine simulate_in_dp(scene, run)
+        type(scene_t), intent(in) :: scene
+        type(run_t), intent(inout) :: run
+        type(scene_dp_t) :: low
+        type(run_dp_t) :: run_low
+        call to_dp(scene, low)
+        call simulate_dp(low, run_low)
+        call from_dp(run_low, run)
+    end subroutine simulate_in_dp
+
+    !> Every value of the scene is a finite real64 (a tolerance below real64's
+    !> range becomes 0, which decides the same for every rate real64 can hold).
+    pure logical function fits_dp(scene)
+        type(scene_t), intent(in) :: scene
+        real(qp), parameter :: top = real(huge(1.0_dp), qp)
+        fits_dp = scene%d <= top .and. scene%v0 <= top .and. all(scene%m <= top) .and. &
+            all(scene%a <= top) .and. scene%v0 >= real(tiny(1.0_dp), qp) .and. &
+            all(scene%m >= real(tiny(1.0_dp), qp))
+    end function fits_dp
+
+    !> The scene rounded to real64.
+    pure subroutine to_dp(scene, low)
+        type(scene_t), intent(in) :: scene
+        type(scene_dp_t), intent(out) :: low
+        low%p = scene%p
+        low%e = real(scene%e, dp)
+        low%d = real(scene%d, dp)
+        low%v0 = real(scene%v0, dp)
+        low%m = real(scene%m, dp)
+        low%a = real(scene%a, dp)
+        low%tol = real(scene%tol, dp)
+        low%max_collisions = scene%max_collisions
+        low%closed_form_limits = scene%closed_form_limits
+    end subroutine to_dp
+
+    !> A real64 run's results in a real128 run.
+    pure subroutine from_dp(low, run)
+        type(run_dp_t), intent(in) :: low
+        type(run_t), intent(inout) :: run
+        run%status = low%status
+        run%message = low%message
+        run%n = low%n
+        run%t_end = real(low%t_end, qp)
+        run%collapses = low%collapses
+        run%closed_limits = low%closed_limits
+        run%collapse_first = low%collapse_first
+        run%collapse_last = low%collapse_last
+        run%collapse_t = real(low%collapse_t, qp)
+        run%y = real(low%y, qp)
+        run%dy = real(low%dy, qp)
+        run%x1 = real(low%x1, qp)
+        run%dx1 = real(low%dx1, qp)
+        run%x = real(low%x, qp)
+        run%v = real(low%v, qp)
+    end subroutine from_dp
+
+end module sphere_row_auto

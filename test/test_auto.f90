@@ -1,0 +1,171 @@
+!> Tests of the precision chosen per scene: wherever real64 is certified it
+!> has real128's collision sequence, count and status, and its velocities lie
+!> within the stated bound of real128's.
+module test_auto
+    use sphere_row, only: qp, dp, scene_t, run_t, event_log_t, scene_init, simulate, &
+        scene_dp_t, run_dp_t, event_log_dp_t, bounds_dp_t, simulate_certified, auto_t, &
+        simulate_auto, itoa
+    use testsuite, only: error_t, unittest_t, new_unittest, check
+    implicit none
+    private
+    public :: collect_auto
+
+    !> Critical restitution of the definition's row, 3 - 2 sqrt 2.
+    real(qp), parameter :: e_crit = 3 - 2*sqrt(2.0_qp)
+    !> Scan of n(e) for the breakpoints, and how close to each the values go.
+    integer, parameter :: scan_points = 1000, offsets = 13
+    !> Values of e drawn uniformly, and random rows of other masses and lengths.
+    integer, parameter :: uniform_values = 3000, random_rows = 2000
+    !> Collision cap of every run here (a random row may collapse slowly).
+    integer, parameter :: cap = 4000
+
+contains
+
+    !> The auto tests.
+    function collect_auto() result(tests)
+        type(unittest_t), allocatable :: tests(:)
+        tests = [ &
+            new_unittest("auto_e_0172_as_real128", test_near_critical), &
+            new_unittest("auto_equals_real128_on_1e4_values", test_many_values) &
+            ]
+    end function collect_auto
+
+    !> Near e_crit real64 is not enough; auto answers as real128 does.
+    subroutine test_near_critical(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(scene_t) :: scene
+        type(run_t) :: run
+        type(auto_t) :: auto
+        integer :: stat
+        character(len=200) :: msg
+        call scene_init(scene, stat, msg, e=0.172_qp)
+        call simulate_auto(scene, run, auto)
+        call check(error, run%n == 115 .and. auto%answered == "qp", &
+            "e = 0.172: not 115 collisions in real128")
+        call scene_init(scene, stat, msg, e=0.5_qp)
+        call simulate_auto(scene, run, auto)
+        call check(error, auto%answered == "dp" .and. auto%certified, &
+            "e = 0.5: real64 not certified")
+    end subroutine test_near_critical
+
+    !> At least 10^4 scenes: e uniform, e dense near every change of n(e) and
+    !> near e_crit (p = 4, equal masses), and random rows.
+    subroutine test_many_values(error)
+        type(error_t), allocatable, intent(out) :: error
+        real(qp), allocatable :: breaks(:)
+        real(qp) :: u(20), e
+        integer :: i, j, s, tried, low, p
+        call breakpoints(breaks)
+        tried = 0
+        low = 0
+        do i = 1, uniform_values
+            e = (i - 0.5_qp)/uniform_values
+            call compare_one(4, e, [(1.0_qp, j=1, 4)], error, tried, low)
+            if (allocated(error)) return
+        end do
+        ! away from the changes of n(e) and from e_crit real64 should mostly do
+        call check(error, low > uniform_values/2, "real64 certified for too few of the " &
+            //"uniform values: "//itoa(low))
+        do i = 1, size(breaks)
+            do j = 1, offsets
+                do s = -1, 1, 2
+                    e = breaks(i) + s*10.0_qp**(-2 - j)
+                    if (e < 0 .or. e > 1) cycle
+                    call compare_one(4, e, [(1.0_qp, p=1, 4)], error, tried, low)
+                    if (allocated(error)) return
+                end do
+            end do
+        end do
+        do j = 1, 30
+            do s = -1, 1, 2
+                do i = 1, 20
+                    e = e_crit + s*i*10.0_qp**(-1 - j/2.0_qp)/20
+                    call compare_one(4, e, [(1.0_qp, p=1, 4)], error, tried, low)
+                    if (allocated(error)) return
+                end do
+            end do
+        end do
+        call random_seed(put=[(977 + 3*i, i=1, 64)])
+        do i = 1, random_rows
+            call random_number(u)
+            p = 2 + int(7*u(1))
+            call compare_one(p, u(2), 1.0e2_qp**(2*u(3:p + 2) - 1), error, tried, low)
+            if (allocated(error)) return
+        end do
+        call check(error, tried >= 10000, "fewer than 10^4 scenes: "//itoa(tried))
+    end subroutine test_many_values
+
+    !> Every change of the collision count n(e) on a scan of e (p = 4, equal
+    !> masses), each bisected to 1e-15.
+    subroutine breakpoints(breaks)
+        real(qp), allocatable, intent(out) :: breaks(:)
+        type(scene_t) :: scene
+        type(run_t) :: run
+        integer :: i, stat, n_prev, it
+        real(qp) :: lo, hi, mid
+        character(len=200) :: msg
+        allocate (breaks(0))
+        call scene_init(scene, stat, msg)
+        n_prev = -1
+        do i = 0, scan_points
+            scene%e = real(i, qp)/scan_points
+            call simulate(scene, run)
+            if (i > 0 .and. run%n /= n_prev) then
+                lo = real(i - 1, qp)/scan_points
+                hi = scene%e
+                do it = 1, 40
+                    mid = 0.5_qp*(lo + hi)
+                    scene%e = mid
+                    call simulate(scene, run)
+                    if (run%n == n_prev) then
+                        lo = mid
+                    else
+                        hi = mid
+                    end if
+                end do
+                breaks = [breaks, 0.5_qp*(lo + hi)]
+                scene%e = real(i, qp)/scan_points
+                call simulate(scene, run)
+            end if
+            n_prev = run%n
+        end do
+    end subroutine breakpoints
+
+    !> One scene: auto against real128; where real64 answered, its certified
+    !> run has real128's sequence, and its velocities are within the bound.
+    subroutine compare_one(p, e, m, error, tried, low)
+        integer, intent(in) :: p
+        real(qp), intent(in) :: e, m(:)
+        type(error_t), allocatable, intent(inout) :: error
+        integer, intent(inout) :: tried, low
+        type(scene_t) :: scene
+        type(run_t) :: ref, run
+        type(event_log_t) :: log
+        type(scene_dp_t) :: scene_low
+        type(run_dp_t) :: run_low
+        type(bounds_dp_t) :: bounds
+        type(event_log_dp_t) :: log_low
+        type(auto_t) :: auto
+        integer :: stat
+        character(len=200) :: msg
+        call scene_init(scene, stat, msg, p=p, e=e, masses=m, max_collisions=cap)
+        call simulate(scene, ref, log)
+        call simulate_auto(scene, run, auto)
+        tried = tried + 1
+        call check(error, run%n == ref%n .and. run%status == ref%status, &
+            "auto: count or status differs at e = "//itoa(tried))
+        if (allocated(error) .or. auto%answered /= "dp") return
+        low = low + 1
+        call check(error, all(abs(run%v - ref%v) <= auto%v_bound + 64*epsilon(1.0_qp)), &
+            "auto: velocities beyond the bound, scene "//itoa(tried))
+        if (allocated(error)) return
+        call scene_init(scene_low, stat, msg, p=p, e=real(e, dp), masses=real(m, dp), &
+            tol=real(scene%tol, dp), max_collisions=cap)
+        call simulate_certified(scene_low, run_low, bounds, log_low)
+        call check(error, log_low%n == log%n, "auto: sequence length differs")
+        if (allocated(error)) return
+        call check(error, all(log_low%first(1:log%n) == log%first(1:log%n)), &
+            "auto: sequence differs, scene "//itoa(tried))
+    end subroutine compare_one
+
+end module test_auto
