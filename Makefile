@@ -40,11 +40,12 @@ C2 := $(RESULTS)/c2_ecdf.tsv $(RESULTS)/c2_histogram.tsv $(RESULTS)/c2_convergen
 METHODS := $(RESULTS)/methods_work_precision.tsv $(RESULTS)/methods_stability.tsv \
       $(RESULTS)/methods_min_distance.tsv $(RESULTS)/methods_costs.tsv \
       $(RESULTS)/methods_platform.tsv
-TABLES := $(A1) $(A2) $(B1) $(B2) $(C1) $(C2) $(METHODS)
+ECRIT := $(RESULTS)/ecrit.tsv $(RESULTS)/ecrit_answers.tsv
+TABLES := $(A1) $(A2) $(B1) $(B2) $(C1) $(C2) $(METHODS) $(ECRIT)
 ANSWERS := $(filter %_answers.tsv,$(TABLES))
 
 FIGURES := a1_paths b1_n b1_critical b2_velocities c1_secant c2_ecdf c2_histogram \
-           c2_convergence
+           c2_convergence ecrit
 PNG := $(FIGURES:%=$(RESULTS)/%.png) $(RESULTS)/methods_work_precision.png \
        $(RESULTS)/methods_stability.png
 SVG := $(FIGURES:%=$(RESULTS)/%.svg) $(RESULTS)/methods_work_precision.svg \
@@ -131,6 +132,8 @@ $(C2) &: $(BUILD_STAMP)
 	$(call study_run,c12-c2)
 $(METHODS) &: $(BUILD_STAMP)
 	$(call study_run,c12-methods)
+$(ECRIT) &: $(BUILD_STAMP)
+	$(call study_run,c12-ecrit)
 
 $(RESULTS)/answers.tsv $(RESULTS)/summary.md &: $(ANSWERS) $(BUILD_STAMP)
 	$(BIN)/c12-summary out=$(RESULTS)
@@ -152,6 +155,7 @@ $(RESULTS)/c1_secant.png $(RESULTS)/c1_secant.svg: $(C1)
 $(RESULTS)/c2_ecdf.png $(RESULTS)/c2_ecdf.svg: $(C2)
 $(RESULTS)/c2_histogram.png $(RESULTS)/c2_histogram.svg: $(C2)
 $(RESULTS)/c2_convergence.png $(RESULTS)/c2_convergence.svg: $(C2)
+$(RESULTS)/ecrit.png $(RESULTS)/ecrit.svg: $(ECRIT)
 
 # the methods' scripts write both formats in one run
 $(RESULTS)/methods_work_precision.png $(RESULTS)/methods_work_precision.svg &: \
