@@ -44,11 +44,12 @@ METHODS := $(RESULTS)/methods_work_precision.tsv $(RESULTS)/methods_stability.ts
       $(RESULTS)/methods_platform.tsv
 COLLAPSE := $(RESULTS)/collapse_survey.tsv $(RESULTS)/collapse_by_p.tsv \
       $(RESULTS)/collapse_answers.tsv
-TABLES := $(A1) $(A2) $(B1) $(B2) $(C1) $(C2) $(METHODS) $(COLLAPSE)
+ECRIT := $(RESULTS)/ecrit.tsv $(RESULTS)/ecrit_answers.tsv
+TABLES := $(A1) $(A2) $(B1) $(B2) $(C1) $(C2) $(METHODS) $(COLLAPSE) $(ECRIT)
 ANSWERS := $(filter %_answers.tsv,$(TABLES))
 
 FIGURES := a1_paths b1_n b1_critical b2_velocities c1_secant c2_ecdf c2_histogram collapse_by_p \
-           c2_convergence
+           c2_convergence ecrit
 PNG := $(FIGURES:%=$(RESULTS)/%.png) $(RESULTS)/methods_work_precision.png \
        $(RESULTS)/methods_stability.png
 SVG := $(FIGURES:%=$(RESULTS)/%.svg) $(RESULTS)/methods_work_precision.svg \
@@ -140,6 +141,8 @@ $(COLLAPSE) &: $(BUILD_STAMP)
 	$(call study_run,c12-collapse)
 $(METHODS) &: $(BUILD_STAMP)
 	$(call study_run,c12-methods)
+$(ECRIT) &: $(BUILD_STAMP)
+	$(call study_run,c12-ecrit)
 
 $(RESULTS)/answers.tsv $(RESULTS)/summary.md &: $(ANSWERS) $(BUILD_STAMP)
 	$(BIN)/c12-summary out=$(RESULTS)
@@ -162,6 +165,7 @@ $(RESULTS)/c2_ecdf.png $(RESULTS)/c2_ecdf.svg: $(C2)
 $(RESULTS)/collapse_by_p.png $(RESULTS)/collapse_by_p.svg: $(COLLAPSE)
 $(RESULTS)/c2_histogram.png $(RESULTS)/c2_histogram.svg: $(C2)
 $(RESULTS)/c2_convergence.png $(RESULTS)/c2_convergence.svg: $(C2)
+$(RESULTS)/ecrit.png $(RESULTS)/ecrit.svg: $(ECRIT)
 
 # the methods' scripts write both formats in one run
 $(RESULTS)/methods_work_precision.png $(RESULTS)/methods_work_precision.svg &: \

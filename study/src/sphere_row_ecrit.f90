@@ -1,0 +1,887 @@
+!> The critical restitution e_c(p) of the struck resting row of p equal
+!> spheres (sphere 1 hits the row with v0, equal gaps a, diameter d): below it
+!> the row collapses (infinitely many collisions in finite time), above it
+!> every run ends after finitely many collisions.
+!>
+!> Two ways to it. (1) Simulation: the outcome of a run is decided by the
+!> engine's collapse machinery (a certified cycle limit, or the fallback of
+!> insignificant rates and gaps), never by a collision count; e_c is bisected
+!> between the largest e that does not end finitely and the smallest that does.
+!> (2) Rate map: the collisions of a run just below e_c repeat one pattern;
+!> over one period the gap rates of the pattern's group map linearly, w -> M(e)
+!> w, and a self-similar collapse needs a real dominant eigenvalue of M. Where
+!> the two largest eigenvalues merge into a complex pair the discriminant of
+!> det(M(e) - lambda) changes sign: bisected in real(16), that is e_c of the
+!> pattern to the resolution of the kind.
+module sphere_row_ecrit
+    use sphere_row, only: dp, qp, scene_t, run_t, event_log_t, scene_dp_t, run_dp_t, &
+        simulate, status_normal, status_invalid
+    use sphere_row_analysis, only: rate_map, sequence_of
+    implicit none
+    private
+    public :: outcome_finite, outcome_cycle, outcome_fallback, outcome_capped
+    public :: outcome_of, outcome_word, is_finite, outcome_changes
+    public :: boundary_t, row_runner_t, runner_init, bisect_boundary, power_fit
+    public :: collapse_cycle, group_map, char_poly, dominant_pair, dominant_is_real
+    public :: rate_map_critical, closed_form_t, closed_form_search
+    public :: ecrit_settings_t, ecrit_row_t, ecrit_row, row_estimate, mcnamara_young_k, &
+        mcnamara_young_e
+
+    !> The run ended normally without a collapse: finitely many collisions.
+    integer, parameter :: outcome_finite = 1
+    !> The engine took a certified cycle limit: the row collapses.
+    integer, parameter :: outcome_cycle = 2
+    !> A collapse limit was taken only by the fallback: the rates and gaps of a
+    !> group fell below tol, but no cycle was certified.
+    integer, parameter :: outcome_fallback = 3
+    !> The safety net max_collisions ended the run before any collapse: the
+    !> outcome is not decided.
+    integer, parameter :: outcome_capped = 4
+
+    !> Bisection of the upper edge of the region that does not end finitely.
+    type :: boundary_t
+        !> Largest e seen that does not end finitely, and its outcome.
+        real(qp) :: e_low = 0.0_qp
+        integer :: outcome_low = outcome_capped
+        !> Smallest e above e_low seen to end finitely.
+        real(qp) :: e_high = 1.0_qp
+        !> Largest e seen with a certified cycle limit (-1 if none): the lower
+        !> end of the bracket whose both ends the collapse machinery certifies.
+        real(qp) :: e_cycle = -1.0_qp
+        !> Largest e seen with any collapse limit (-1 if none).
+        real(qp) :: e_collapse = -1.0_qp
+        !> Runs made by the bisection.
+        integer :: steps = 0
+    end type boundary_t
+
+    !> Runs of the struck row of p equal spheres in one real kind (real64
+    !> or real(16)) with a tolerance and a safety net: the outcome at any e.
+    type :: row_runner_t
+        !> dp or qp: which of the two scenes runs.
+        integer :: precision = qp
+        type(scene_t) :: scene
+        type(run_t) :: run
+        type(scene_dp_t) :: scene_dp
+        type(run_dp_t) :: run_dp
+    contains
+        !> Run at e: its outcome and its number of collisions.
+        procedure :: outcome => runner_outcome
+    end type row_runner_t
+
+    !> The outcome of a finished run of either kind.
+    interface outcome_of
+        module procedure outcome_of_qp, outcome_of_dp
+    end interface outcome_of
+
+    !> A closed form found for a value: its text and its value in real(16).
+    type :: closed_form_t
+        !> True if a candidate matched.
+        logical :: found = .false.
+        !> The form, e.g. "tan^2(pi/12) = 7-4sqrt(3)" or "root of x^2-14x+1".
+        character(len=80) :: text = "-"
+        !> Its value in real(16).
+        real(qp) :: value = 0.0_qp
+    end type closed_form_t
+
+    !> What ecrit_row does for each p; the defaults fit the whole study
+    !> (p = 3 ... 64) into about a minute of one core.
+    type :: ecrit_settings_t
+        !> Points of the scan of e in (0, 1): e = j/n_grid, j = 1 ... n_grid-1.
+        integer :: n_grid = 20
+        !> Relative width to which the edge of the finite region is bisected,
+        !> and the most runs the bisection may make.
+        real(qp) :: resolution = 1.0e-10_qp
+        integer :: max_steps = 40
+        !> The coarse stage: its relative resolution and its tolerance
+        !> (real64's sqrt(tiny): the smallest whose gaps do not underflow).
+        real(qp) :: resolution_coarse = 1.0e-6_qp
+        real(qp) :: tol_coarse = real(sqrt(tiny(1.0_dp)), qp)
+        !> Rows up to this p get the fine stage, whose bracket is the coarse
+        !> one widened by this relative margin on each side.
+        integer :: p_fine = 6
+        real(qp) :: fine_margin = 3.0e-2_qp
+        !> The runs' insignificance tolerance (scene_t%tol): tiny, so that the
+        !> fallback takes a limit only after the rates fell by its decades.
+        real(qp) :: tol = 1.0e-4000_qp
+        !> The engine's safety net: a run that reaches it undecided.
+        integer :: max_collisions = 50000
+        !> The safety net of the fine stage (its runs near e_c are long).
+        integer :: max_collisions_fine = 1000000
+        !> Runs of the fit of n against e - e_c: their number, and the range
+        !> of e - e_c relative to 1 - e_c.
+        integer :: n_fit = 8
+        real(qp) :: fit_delta_max = 1.0e-1_qp, fit_delta_min = 1.0e-6_qp
+        !> Runs with fewer collisions are left out of the fit (the asymptote
+        !> does not hold there yet).
+        integer :: fit_n_min = 200
+        !> Rows up to this p also get e_c from the rate map of their cycle.
+        integer :: map_p_max = 6
+        !> Longest collision pattern looked for as the collapse cycle.
+        integer :: period_max = 128
+        !> Relative distance below the simulated edge of the run whose cycle
+        !> is analysed, and the relative half-width of the window searched
+        !> for the discriminant's sign change around the edge.
+        real(qp) :: pattern_offset = 1.0e-3_qp
+        real(qp) :: map_window = 1.0e-4_qp
+    end type ecrit_settings_t
+
+    !> Everything found for one p.
+    type :: ecrit_row_t
+        !> Number of spheres.
+        integer :: p = 0
+        !> The bisected edge of the finite region and the certified ends.
+        type(boundary_t) :: b
+        !> Changes between finite and not finite along the scan, and the scan
+        !> points that reached max_collisions undecided.
+        integer :: changes = 0, capped = 0
+        !> Kind of the runs that gave the edge (dp or qp), and all runs made.
+        integer :: precision = dp
+        integer :: runs = 0
+        !> n ~ c (e - e_c)^(-alpha) above e_c, from n_fit_used runs.
+        real(qp) :: c = 0.0_qp, alpha = 0.0_qp
+        integer :: n_fit_used = 0
+        !> e_c from the rate map of the collapse cycle, if has_map.
+        logical :: has_map = .false.
+        real(qp) :: e_map = 0.0_qp
+        !> The collapse cycle (gap indices) found below e_c, and where.
+        integer, allocatable :: cycle(:)
+        real(qp) :: e_pattern = 0.0_qp
+        !> A closed form of e_map, if one was found.
+        type(closed_form_t) :: form
+    end type ecrit_row_t
+
+    !> Largest integer coefficient of the candidate polynomials per degree
+    !> (degrees 1 ... 4): kept small so the search stays a screen of a few
+    !> million candidates.
+    integer, parameter :: coef_bound(4) = [60, 40, 16, 8]
+    !> Largest denominator k of the candidates tan^2(j pi/k).
+    integer, parameter :: tan_denominator_max = 96
+    !> Relative residual of the real64 screen of a candidate.
+    real(dp), parameter :: screen_tol = 1.0e-11_dp
+    !> Relative agreement that a closed form must reach (about 30 digits).
+    real(qp), parameter :: closed_tol = 1.0e-29_qp
+    !> Times a pattern must repeat at the end of a run to count as its cycle.
+    integer, parameter :: cycle_repeats = 3
+    !> Relative step at which the nature of the dominant eigenvalue is checked
+    !> on either side of a rate-map e_c.
+    real(qp), parameter :: probe_step = 1.0e-6_qp
+    !> Iterations of the simultaneous root finder (Durand-Kerner).
+    integer, parameter :: root_iterations = 2000
+
+contains
+
+    !> e_c of the struck row of p equal spheres (a = d = v0 = 1) by the
+    !> settings `s`. A coarse stage in real64 (fast, tolerance s%tol_coarse)
+    !> scans e and bisects the edge of the finite region; for p <= s%p_fine a
+    !> fine stage in real(16) with the tiny s%tol bisects it again from the
+    !> coarse bracket widened by s%fine_margin. Then the fit of n above the
+    !> edge and, for p <= s%map_p_max, the rate map of the collapse cycle with
+    !> a search for its closed form.
+    subroutine ecrit_row(p, s, row)
+        integer, intent(in) :: p
+        type(ecrit_settings_t), intent(in) :: s
+        type(ecrit_row_t), intent(out) :: row
+        type(row_runner_t) :: coarse, fine
+        type(event_log_t) :: log
+        type(boundary_t) :: b_fine
+        integer :: outcomes(s%n_grid - 1), j, top, stat, n, o_lo, o_hi
+        real(qp) :: e_grid(s%n_grid - 1), e_lo, e_hi, w
+        row%p = p
+        call runner_init(coarse, p, dp, s%tol_coarse, s%max_collisions)
+        ! 1. scan
+        do j = 1, s%n_grid - 1
+            e_grid(j) = real(j, qp)/s%n_grid
+            call coarse%outcome(e_grid(j), outcomes(j), n)
+        end do
+        row%changes = outcome_changes([outcomes, outcome_finite])
+        row%capped = count(outcomes == outcome_capped)
+        ! 2. the edge above the highest scan point that does not end finitely
+        top = 0
+        do j = s%n_grid - 1, 1, -1
+            if (.not. is_finite(outcomes(j))) then
+                top = j
+                exit
+            end if
+        end do
+        e_lo = 0.0_qp
+        e_hi = e_grid(1)
+        o_lo = outcome_capped
+        if (top > 0) then
+            e_lo = e_grid(top)
+            e_hi = 1.0_qp
+            if (top < s%n_grid - 1) e_hi = e_grid(top + 1)
+            o_lo = outcomes(top)
+        end if
+        do j = 1, top
+            if (outcomes(j) == outcome_cycle) row%b%e_cycle = e_grid(j)
+            if (outcomes(j) == outcome_cycle .or. outcomes(j) == outcome_fallback) &
+                row%b%e_collapse = e_grid(j)
+        end do
+        call bisect_boundary(coarse, e_lo, e_hi, o_lo, s%resolution_coarse, s%max_steps, row%b)
+        row%precision = dp
+        row%runs = s%n_grid - 1 + row%b%steps
+        ! 3. the fine stage from the widened coarse bracket, if its ends hold
+        if (p <= s%p_fine) then
+            call runner_init(fine, p, qp, s%tol, s%max_collisions_fine)
+            e_lo = row%b%e_low*(1.0_qp - s%fine_margin)
+            e_hi = min(1.0_qp, row%b%e_high*(1.0_qp + s%fine_margin))
+            call fine%outcome(e_lo, o_lo, n)
+            call fine%outcome(e_hi, o_hi, n)
+            row%runs = row%runs + 2
+            if (.not. is_finite(o_lo) .and. is_finite(o_hi)) then
+                b_fine%e_cycle = row%b%e_cycle
+                b_fine%e_collapse = row%b%e_collapse
+                call bisect_boundary(fine, e_lo, e_hi, o_lo, s%resolution, s%max_steps, b_fine)
+                row%b = b_fine
+                row%precision = qp
+                row%runs = row%runs + b_fine%steps
+            end if
+        end if
+        ! 4. e_c from the rate map of the cycle of a run just below the edge
+        allocate (row%cycle(0))
+        if (p <= s%map_p_max) then
+            if (.not. allocated(fine%scene%m)) &
+                call runner_init(fine, p, qp, s%tol, s%max_collisions_fine)
+            row%e_pattern = row%b%e_low*(1.0_qp - s%pattern_offset)
+            fine%scene%e = row%e_pattern
+            call simulate(fine%scene, fine%run, log)
+            call cycle_of(log, row%cycle)
+            w = s%map_window*row%b%e_high
+            call rate_map_critical(fine%scene%m, row%cycle, row%b%e_low - w, &
+                row%b%e_high + w, probe_step*row%b%e_high, row%e_map, stat)
+            row%has_map = stat == status_normal
+            if (row%has_map) call closed_form_search(row%e_map, closed_tol, row%form)
+        end if
+        ! 5. n against e - e_c above e_c, in the kind of the edge
+        if (row%precision == qp) then
+            call fit_growth(fine, s, row)
+        else
+            call fit_growth(coarse, s, row)
+        end if
+
+    contains
+
+        !> The cycle of the logged run, from all its collisions before the
+        !> first collapse (a certified limit follows its cycle to the end),
+        !> else from their first three quarters (a fallback limit can end in a
+        !> transient); a pattern counts once it repeats cycle_repeats times.
+        subroutine cycle_of(events, cycle)
+            type(event_log_t), intent(in) :: events
+            integer, allocatable, intent(out) :: cycle(:)
+            integer, allocatable :: pairs(:)
+            integer :: n_kept, part
+            integer, parameter :: parts(2, 2) = reshape([1, 1, 3, 4], [2, 2])
+            call sequence_of(events, pairs, before_collapse=.true.)
+            do part = 1, size(parts, 2)
+                n_kept = parts(1, part)*size(pairs)/parts(2, part)
+                call collapse_cycle(pairs(:n_kept), cycle_repeats, s%period_max, cycle)
+                if (size(cycle) > 0) return
+            end do
+        end subroutine cycle_of
+
+    end subroutine ecrit_row
+
+    !> Least-squares fit of n ~ c (e - e_c)^(-alpha) over finite runs with at
+    !> least s%fit_n_min collisions, e - e_c spread logarithmically over
+    !> [fit_delta_min, fit_delta_max] (1 - e_c), none closer than ten widths of
+    !> the bracket; e_c is the rate map's value where there is one, else the
+    !> lowest e seen to end finitely.
+    subroutine fit_growth(runner, s, row)
+        type(row_runner_t), intent(inout) :: runner
+        type(ecrit_settings_t), intent(in) :: s
+        type(ecrit_row_t), intent(inout) :: row
+        real(qp) :: e_ref, delta(s%n_fit), n(s%n_fit), slope, t
+        logical :: use(s%n_fit)
+        integer :: k, outcome, count
+        integer, parameter :: widths = 10
+        e_ref = row%b%e_high
+        if (row%has_map) e_ref = row%e_map
+        do k = 1, s%n_fit
+            t = 0.0_qp
+            if (s%n_fit > 1) t = real(k - 1, qp)/(s%n_fit - 1)
+            delta(k) = (1.0_qp - e_ref)*s%fit_delta_max*(s%fit_delta_min/s%fit_delta_max)**t
+            use(k) = .false.
+            n(k) = 1.0_qp
+            if (e_ref + delta(k) >= 1.0_qp) cycle
+            if (delta(k) < widths*(row%b%e_high - row%b%e_low)) cycle
+            call runner%outcome(e_ref + delta(k), outcome, count)
+            row%runs = row%runs + 1
+            n(k) = real(max(count, 1), qp)
+            use(k) = is_finite(outcome) .and. count >= s%fit_n_min
+        end do
+        call power_fit(delta, n, use, row%c, slope, row%n_fit_used)
+        row%alpha = -slope
+    end subroutine fit_growth
+
+    !> The struck row of p equal spheres (a = d = v0 = 1) in kind `precision`,
+    !> insignificance tolerance `tol` and safety net `max_collisions`.
+    pure subroutine runner_init(runner, p, precision, tol, max_collisions)
+        type(row_runner_t), intent(out) :: runner
+        integer, intent(in) :: p, precision, max_collisions
+        real(qp), intent(in) :: tol
+        runner%precision = precision
+        runner%scene%p = p
+        runner%scene%tol = tol
+        runner%scene%max_collisions = max_collisions
+        allocate (runner%scene%m(p), source=1.0_qp)
+        allocate (runner%scene%a(p - 1), source=1.0_qp)
+        runner%scene_dp%p = p
+        runner%scene_dp%tol = real(tol, dp)
+        runner%scene_dp%max_collisions = max_collisions
+        allocate (runner%scene_dp%m(p), source=1.0_dp)
+        allocate (runner%scene_dp%a(p - 1), source=1.0_dp)
+    end subroutine runner_init
+
+    !> Run at e in the runner's kind; `n` is the number of collisions.
+    subroutine runner_outcome(self, e, outcome, n)
+        class(row_runner_t), intent(inout) :: self
+        real(qp), intent(in) :: e
+        integer, intent(out) :: outcome, n
+        if (self%precision == dp) then
+            self%scene_dp%e = real(e, dp)
+            call simulate(self%scene_dp, self%run_dp)
+            outcome = outcome_of(self%run_dp)
+            n = self%run_dp%n
+        else
+            self%scene%e = e
+            call simulate(self%scene, self%run)
+            outcome = outcome_of(self%run)
+            n = self%run%n
+        end if
+    end subroutine runner_outcome
+
+    !> The row's best e_c and how it was found: the rate map's value where it
+    !> lies within `window` (relative) of the simulated edge, else the middle
+    !> of the bisected bracket, named by the outcome at its lower end. The
+    !> rate map may lie above the edge: near e_c finite runs and collapses
+    !> can alternate (p = 6), and the bisection then stops at a lower change.
+    pure subroutine row_estimate(row, window, e_c, method)
+        type(ecrit_row_t), intent(in) :: row
+        real(qp), intent(in) :: window
+        real(qp), intent(out) :: e_c
+        character(len=:), allocatable, intent(out) :: method
+        e_c = 0.5_qp*(row%b%e_low + row%b%e_high)
+        method = "edge_"//outcome_word(row%b%outcome_low)
+        if (.not. row%has_map) return
+        if (abs(row%e_map - row%b%e_high) > window*row%b%e_high) return
+        e_c = row%e_map
+        method = "rate_map"
+    end subroutine row_estimate
+
+    !> The constant K of the McNamara-Young scaling p = K (-ln(1-e_c))/(1-e_c)
+    !> by least squares through the origin over the rows with use(j).
+    pure real(qp) function mcnamara_young_k(p, e_c, use) result(k)
+        integer, intent(in) :: p(:)
+        real(qp), intent(in) :: e_c(:)
+        logical, intent(in) :: use(:)
+        real(qp) :: g(size(p))
+        g = -log(1.0_qp - e_c)/(1.0_qp - e_c)
+        k = sum(merge(p*g, 0.0_qp, use))/sum(merge(g**2, 0.0_qp, use))
+    end function mcnamara_young_k
+
+    !> The e_c of the McNamara-Young scaling for p spheres: the root in (0, 1)
+    !> of K (-ln(1-e))/(1-e) = p (the left side grows with e), bisected.
+    pure real(qp) function mcnamara_young_e(p, k) result(e)
+        integer, intent(in) :: p
+        real(qp), intent(in) :: k
+        real(qp) :: lo, hi
+        lo = 0.0_qp
+        hi = 1.0_qp
+        do
+            e = 0.5_qp*(lo + hi)
+            if (e <= lo .or. e >= hi) exit
+            if (k*(-log(1.0_qp - e))/(1.0_qp - e) < p) then
+                lo = e
+            else
+                hi = e
+            end if
+        end do
+    end function mcnamara_young_e
+
+    !> The outcome of a finished real(16) run (one of the outcome_* codes).
+    pure integer function outcome_of_qp(run) result(outcome)
+        type(run_t), intent(in) :: run
+        outcome = outcome_code(run%collapses, run%closed_limits, run%status)
+    end function outcome_of_qp
+
+    !> The outcome of a finished real64 run.
+    pure integer function outcome_of_dp(run) result(outcome)
+        type(run_dp_t), intent(in) :: run
+        outcome = outcome_code(run%collapses, run%closed_limits, run%status)
+    end function outcome_of_dp
+
+    !> A certified cycle limit decides a collapse; a fallback limit alone is
+    !> reported as such; no collapse and a normal end is a finite run; the
+    !> safety net leaves it undecided.
+    pure integer function outcome_code(collapses, cycle_limits, status) result(outcome)
+        integer, intent(in) :: collapses, cycle_limits, status
+        if (collapses > 0) then
+            if (cycle_limits > 0) then
+                outcome = outcome_cycle
+            else
+                outcome = outcome_fallback
+            end if
+        else if (status == status_normal) then
+            outcome = outcome_finite
+        else
+            outcome = outcome_capped
+        end if
+    end function outcome_code
+
+    !> The word of an outcome in tables.
+    pure function outcome_word(outcome) result(word)
+        integer, intent(in) :: outcome
+        character(len=:), allocatable :: word
+        select case (outcome)
+        case (outcome_finite)
+            word = "finite"
+        case (outcome_cycle)
+            word = "cycle"
+        case (outcome_fallback)
+            word = "fallback"
+        case default
+            word = "capped"
+        end select
+    end function outcome_word
+
+    !> Whether the outcome is a finite run.
+    elemental logical function is_finite(outcome)
+        integer, intent(in) :: outcome
+        is_finite = outcome == outcome_finite
+    end function is_finite
+
+    !> Number of changes between finite and not finite along a scan.
+    pure integer function outcome_changes(outcomes) result(changes)
+        integer, intent(in) :: outcomes(:)
+        integer :: j
+        changes = 0
+        do j = 2, size(outcomes)
+            if (is_finite(outcomes(j)) .neqv. is_finite(outcomes(j - 1))) changes = changes + 1
+        end do
+    end function outcome_changes
+
+    !> Bisect between e_lo (does not end finitely, outcome `outcome_lo`) and
+    !> e_hi (ends finitely) until the bracket is at most `resolution` times
+    !> e_hi wide or `max_steps` runs were made, each by `runner`.
+    subroutine bisect_boundary(runner, e_lo, e_hi, outcome_lo, resolution, max_steps, b)
+        type(row_runner_t), intent(inout) :: runner
+        real(qp), intent(in) :: e_lo, e_hi, resolution
+        integer, intent(in) :: outcome_lo, max_steps
+        type(boundary_t), intent(inout) :: b
+        real(qp) :: mid
+        integer :: outcome, n
+        b%e_low = e_lo
+        b%outcome_low = outcome_lo
+        b%e_high = e_hi
+        b%steps = 0
+        call note(e_lo, outcome_lo)
+        do while (b%e_high - b%e_low > resolution*b%e_high .and. b%steps < max_steps)
+            mid = 0.5_qp*(b%e_low + b%e_high)
+            if (mid <= b%e_low .or. mid >= b%e_high) exit
+            call runner%outcome(mid, outcome, n)
+            b%steps = b%steps + 1
+            call note(mid, outcome)
+            if (is_finite(outcome)) then
+                b%e_high = mid
+            else
+                b%e_low = mid
+                b%outcome_low = outcome
+            end if
+        end do
+
+    contains
+
+        !> Keep the largest e of each kind of collapse.
+        subroutine note(e, o)
+            real(qp), intent(in) :: e
+            integer, intent(in) :: o
+            if (o == outcome_cycle) b%e_cycle = max(b%e_cycle, e)
+            if (o == outcome_cycle .or. o == outcome_fallback) &
+                b%e_collapse = max(b%e_collapse, e)
+        end subroutine note
+
+    end subroutine bisect_boundary
+
+    !> Least squares of log y = log c + slope log x over the points with
+    !> use(j); `n_used` of them (slope and c are 0 if fewer than two).
+    pure subroutine power_fit(x, y, use, c, slope, n_used)
+        real(qp), intent(in) :: x(:), y(:)
+        logical, intent(in) :: use(:)
+        real(qp), intent(out) :: c, slope
+        integer, intent(out) :: n_used
+        real(qp) :: sx, sy, sxx, sxy, lx, ly
+        integer :: j
+        sx = 0.0_qp
+        sy = 0.0_qp
+        sxx = 0.0_qp
+        sxy = 0.0_qp
+        n_used = 0
+        c = 0.0_qp
+        slope = 0.0_qp
+        do j = 1, size(x)
+            if (.not. use(j)) cycle
+            lx = log(x(j))
+            ly = log(y(j))
+            sx = sx + lx
+            sy = sy + ly
+            sxx = sxx + lx**2
+            sxy = sxy + lx*ly
+            n_used = n_used + 1
+        end do
+        if (n_used < 2) return
+        if (n_used*sxx - sx**2 <= 0.0_qp) return
+        slope = (n_used*sxy - sx*sy)/(n_used*sxx - sx**2)
+        c = exp((sy - slope*sx)/n_used)
+    end subroutine power_fit
+
+    !> The collapse cycle of a collision sequence: the shortest pattern of at
+    !> most `period_max` collisions that its end repeats `repeats` times in a
+    !> row. `cycle` has size 0 if there is none.
+    pure subroutine collapse_cycle(pairs, repeats, period_max, cycle)
+        integer, intent(in) :: pairs(:), repeats, period_max
+        integer, allocatable, intent(out) :: cycle(:)
+        integer :: n, q
+        n = size(pairs)
+        do q = 1, min(period_max, n/repeats)
+            if (all(pairs(n - (repeats - 1)*q + 1:) == pairs(n - repeats*q + 1:n - q))) then
+                cycle = pairs(n - q + 1:)
+                return
+            end if
+        end do
+        allocate (cycle(0))
+    end subroutine collapse_cycle
+
+    !> The rate map of one period of `cycle` on the gaps it touches, lo..hi
+    !> (spheres lo..hi+1, masses m): a of size (hi-lo+1, hi-lo+1). The impulses
+    !> given to the gaps outside do not come back into the group.
+    pure subroutine group_map(m, e, cycle, a)
+        real(qp), intent(in) :: m(:), e
+        integer, intent(in) :: cycle(:)
+        real(qp), allocatable, intent(out) :: a(:, :)
+        real(qp) :: full(size(m) - 1, size(m) - 1)
+        integer :: lo, hi
+        call rate_map(m, e, cycle, full)
+        lo = minval(cycle)
+        hi = maxval(cycle)
+        a = full(lo:hi, lo:hi)
+    end subroutine group_map
+
+    !> Coefficients c(0:q) of det(lambda I - a) = sum_k c(k) lambda^k (c(q) =
+    !> 1), by the Faddeev-LeVerrier recursion (q is small here and real(16)
+    !> leaves room for its growth of rounding).
+    pure subroutine char_poly(a, c)
+        real(qp), intent(in) :: a(:, :)
+        real(qp), intent(out) :: c(0:)
+        real(qp) :: mk(size(a, 1), size(a, 1)), am(size(a, 1), size(a, 1))
+        integer :: q, k, i
+        q = size(a, 1)
+        c(q) = 1.0_qp
+        mk = 0.0_qp
+        do k = 1, q
+            ! M_k = A M_{k-1} + c_{q-k+1} I, c_{q-k} = -tr(A M_k)/k
+            am = matmul(a, mk)
+            do i = 1, q
+                am(i, i) = am(i, i) + c(q - k + 1)
+            end do
+            mk = am
+            am = matmul(a, mk)
+            c(q - k) = 0.0_qp
+            do i = 1, q
+                c(q - k) = c(q - k) - am(i, i)
+            end do
+            c(q - k) = c(q - k)/k
+        end do
+    end subroutine char_poly
+
+    !> The quadratic factor x^2 + u x + v of the monic polynomial sum c(k)
+    !> x^k that holds its two roots of largest modulus, refined in place from
+    !> a guess by Bairstow's method (Newton's method on u, v for a zero
+    !> remainder). Unlike the two roots, the factor stays well conditioned
+    !> where they meet, so u^2 - 4v changes sign there with the accuracy of
+    !> the coefficients.
+    pure subroutine dominant_pair(c, u, v)
+        real(qp), intent(in) :: c(0:)
+        real(qp), intent(inout) :: u, v
+        real(qp) :: b(0:ubound(c, 1)), d(0:ubound(c, 1) + 1), du, dv, det
+        integer :: q, k, it
+        integer, parameter :: bairstow_steps = 100
+        q = ubound(c, 1)
+        if (q == 2) then
+            u = c(1)
+            v = c(0)
+            return
+        end if
+        do it = 1, bairstow_steps
+            b(q) = c(q)
+            b(q - 1) = c(q - 1) - u*b(q)
+            do k = q - 2, 0, -1
+                b(k) = c(k) - u*b(k + 1) - v*b(k + 2)
+            end do
+            d(q + 1) = 0.0_qp
+            d(q) = b(q)
+            d(q - 1) = b(q - 1) - u*d(q)
+            do k = q - 2, 1, -1
+                d(k) = b(k) - u*d(k + 1) - v*d(k + 2)
+            end do
+            det = d(1)*d(3) - d(2)**2
+            if (det == 0.0_qp) exit
+            du = (b(0)*d(3) - b(1)*d(2))/det
+            dv = (d(1)*b(1) - d(2)*b(0))/det
+            u = u + du
+            v = v + dv
+            if (abs(du) <= epsilon(u)*abs(u) .and. abs(dv) <= epsilon(v)*abs(v)) exit
+        end do
+    end subroutine dominant_pair
+
+    !> Roots of the monic polynomial sum c(k) x^k by the Durand-Kerner
+    !> iteration in complex real(16), from points on a circle off the axis.
+    pure subroutine poly_roots(c, z)
+        real(qp), intent(in) :: c(0:)
+        complex(qp), intent(out) :: z(:)
+        complex(qp) :: num, den
+        real(qp), parameter :: pi = acos(-1.0_qp), start_angle = 0.4_qp
+        real(qp) :: radius
+        integer :: q, it, i, j, k
+        q = ubound(c, 1)
+        radius = 1.0_qp + maxval(abs(c(:q - 1)))
+        do i = 1, q
+            z(i) = radius*exp(cmplx(0.0_qp, start_angle + 2*pi*(i - 1)/q, qp))
+        end do
+        do it = 1, root_iterations
+            do i = 1, q
+                num = c(q)
+                do k = q - 1, 0, -1
+                    num = num*z(i) + c(k)
+                end do
+                den = 1.0_qp
+                do j = 1, q
+                    if (j /= i) den = den*(z(i) - z(j))
+                end do
+                z(i) = z(i) - num/den
+            end do
+        end do
+    end subroutine poly_roots
+
+    !> Whether the eigenvalue of largest modulus of the polynomial sum c(k)
+    !> x^k (monic) is real: roots by Durand-Kerner in complex real(16), a root
+    !> counted real if its imaginary part is below `imag_tol` times its modulus.
+    pure logical function dominant_is_real(c, imag_tol) result(real_dominant)
+        real(qp), intent(in) :: c(0:), imag_tol
+        complex(qp) :: z(ubound(c, 1))
+        integer :: k
+        call poly_roots(c, z)
+        k = maxloc(abs(z), 1)
+        real_dominant = abs(aimag(z(k))) <= imag_tol*abs(z(k))
+    end function dominant_is_real
+
+    !> The restitution in [e_lo, e_hi] where the two dominant eigenvalues of
+    !> the group rate map of `cycle` (masses m) merge, from real below to a
+    !> complex pair above: the sign change of u^2 - 4v of their quadratic
+    !> factor (dominant_pair), bisected to the resolution of real(16). `stat`
+    !> is status_invalid if it does not change sign in the bracket, or if the
+    !> dominant eigenvalue is not real a step `probe` below the point found
+    !> and complex a step above it (roots by poly_roots).
+    subroutine rate_map_critical(m, cycle, e_lo, e_hi, probe, e_c, stat)
+        real(qp), intent(in) :: m(:), e_lo, e_hi, probe
+        integer, intent(in) :: cycle(:)
+        real(qp), intent(out) :: e_c
+        integer, intent(out) :: stat
+        real(qp) :: lo, hi, mid, d_lo, u, v
+        real(qp), allocatable :: c(:)
+        complex(qp), allocatable :: z(:)
+        logical, allocatable :: others(:)
+        real(qp), parameter :: imag_tol = 1.0e-12_qp
+        integer :: k1, k2
+        e_c = 0.0_qp
+        stat = status_invalid
+        if (size(cycle) == 0) return
+        if (maxval(cycle) == minval(cycle)) return
+        allocate (c(0:maxval(cycle) - minval(cycle) + 1), z(maxval(cycle) - minval(cycle) + 1), &
+            others(maxval(cycle) - minval(cycle) + 1))
+        lo = e_lo
+        hi = e_hi
+        ! the dominant pair's factor at e_lo from all roots, then followed
+        call coefficients(lo)
+        call poly_roots(c, z)
+        others = .true.
+        k1 = maxloc(abs(z), 1)
+        others(k1) = .false.
+        k2 = maxloc(abs(z), 1, mask=others)
+        u = -real(z(k1) + z(k2), qp)
+        v = real(z(k1)*z(k2), qp)
+        d_lo = pair_disc(lo)
+        if (sign(1.0_qp, d_lo) == sign(1.0_qp, pair_disc(hi))) return
+        do
+            mid = 0.5_qp*(lo + hi)
+            if (mid <= lo .or. mid >= hi) exit
+            if (sign(1.0_qp, pair_disc(mid)) == sign(1.0_qp, d_lo)) then
+                lo = mid
+            else
+                hi = mid
+            end if
+        end do
+        e_c = 0.5_qp*(lo + hi)
+        call coefficients(e_c - probe)
+        if (.not. dominant_is_real(c, imag_tol)) return
+        call coefficients(e_c + probe)
+        if (dominant_is_real(c, imag_tol)) return
+        stat = status_normal
+
+    contains
+
+        !> The characteristic polynomial at e into c.
+        subroutine coefficients(e)
+            real(qp), intent(in) :: e
+            real(qp), allocatable :: a(:, :)
+            call group_map(m, e, cycle, a)
+            call char_poly(a, c)
+        end subroutine coefficients
+
+        !> u^2 - 4v of the dominant pair at e, followed from the last (u, v).
+        real(qp) function pair_disc(e)
+            real(qp), intent(in) :: e
+            call coefficients(e)
+            call dominant_pair(c, u, v)
+            pair_disc = u**2 - 4*v
+        end function pair_disc
+
+    end subroutine rate_map_critical
+
+    !> Simple closed forms of x in (0, 1) that agree with it to `rel_tol`
+    !> relative: tan^2(j pi/k) with k <= tan_denominator_max, then the roots
+    !> in (0, 1) of integer polynomials of degree 1 ... 4 with coefficients
+    !> bounded by coef_bound (screened in real64, the candidate's root then
+    !> polished by Newton's method in real(16) and compared). The first match
+    !> is returned, the lowest degree first.
+    subroutine closed_form_search(x, rel_tol, form)
+        real(qp), intent(in) :: x, rel_tol
+        type(closed_form_t), intent(out) :: form
+        real(qp), parameter :: pi = acos(-1.0_qp)
+        real(qp) :: t
+        integer :: j, k, degree
+        do k = 3, tan_denominator_max
+            do j = 1, (k - 1)/2
+                if (gcd(j, k) /= 1) cycle
+                t = tan(j*pi/k)**2
+                if (abs(t - x) <= rel_tol*x) then
+                    form%found = .true.
+                    form%value = t
+                    if (j == 1) then
+                        write (form%text, "(a, i0, a)") "tan^2(pi/", k, ")"
+                    else
+                        write (form%text, "(a, i0, a, i0, a)") "tan^2(", j, "pi/", k, ")"
+                    end if
+                    return
+                end if
+            end do
+        end do
+        do degree = 1, size(coef_bound)
+            call polynomial_search(x, degree, coef_bound(degree), rel_tol, form)
+            if (form%found) return
+        end do
+    end subroutine closed_form_search
+
+    !> An integer polynomial of `degree` with coefficients in [-bound, bound]
+    !> and a root that matches x (see closed_form_search).
+    subroutine polynomial_search(x, degree, bound, rel_tol, form)
+        real(qp), intent(in) :: x, rel_tol
+        integer, intent(in) :: degree, bound
+        type(closed_form_t), intent(inout) :: form
+        integer :: coef(0:degree), total, idx, i, rest
+        real(dp) :: xd, powers(0:degree), value, scale
+        real(qp) :: root
+        xd = real(x, dp)
+        do i = 0, degree
+            powers(i) = xd**i
+        end do
+        total = (2*bound + 1)**(degree + 1)
+        do idx = 0, total - 1
+            rest = idx
+            do i = 0, degree
+                coef(i) = mod(rest, 2*bound + 1) - bound
+                rest = rest/(2*bound + 1)
+            end do
+            ! leading coefficient > 0 and no common factor: each polynomial once
+            if (coef(degree) <= 0) cycle
+            value = sum(coef*powers)
+            scale = sum(abs(coef*powers))
+            if (abs(value) > screen_tol*scale) cycle
+            if (gcd_all(coef) /= 1) cycle
+            root = newton_root(coef, x)
+            if (abs(root - x) <= rel_tol*x) then
+                form%found = .true.
+                form%value = root
+                form%text = "root of "//poly_text(coef)
+                return
+            end if
+        end do
+    end subroutine polynomial_search
+
+    !> A root of the integer polynomial coef near x, by Newton's method in
+    !> real(16).
+    pure real(qp) function newton_root(coef, x) result(root)
+        integer, intent(in) :: coef(0:)
+        real(qp), intent(in) :: x
+        real(qp) :: f, df
+        integer :: it, k
+        integer, parameter :: newton_steps = 60
+        root = x
+        do it = 1, newton_steps
+            f = 0.0_qp
+            df = 0.0_qp
+            do k = ubound(coef, 1), 0, -1
+                df = df*root + f
+                f = f*root + coef(k)
+            end do
+            if (df == 0.0_qp) exit
+            root = root - f/df
+        end do
+    end function newton_root
+
+    !> The polynomial as text, e.g. "x^2-14x+1".
+    pure function poly_text(coef) result(text)
+        integer, intent(in) :: coef(0:)
+        character(len=:), allocatable :: text
+        character(len=16) :: buf
+        integer :: k
+        text = ""
+        do k = ubound(coef, 1), 0, -1
+            if (coef(k) == 0) cycle
+            if (coef(k) < 0) then
+                text = text//"-"
+            else if (len(text) > 0) then
+                text = text//"+"
+            end if
+            if (abs(coef(k)) /= 1 .or. k == 0) then
+                write (buf, "(i0)") abs(coef(k))
+                text = text//trim(buf)
+            end if
+            if (k >= 1) text = text//"x"
+            if (k >= 2) then
+                write (buf, "(i0)") k
+                text = text//"^"//trim(buf)
+            end if
+        end do
+    end function poly_text
+
+    !> Greatest common divisor of two integers.
+    pure recursive integer function gcd(a, b) result(g)
+        integer, intent(in) :: a, b
+        if (b == 0) then
+            g = abs(a)
+        else
+            g = gcd(b, mod(a, b))
+        end if
+    end function gcd
+
+    !> Greatest common divisor of all coefficients.
+    pure integer function gcd_all(coef) result(g)
+        integer, intent(in) :: coef(:)
+        integer :: i
+        g = 0
+        do i = 1, size(coef)
+            g = gcd(g, coef(i))
+        end do
+    end function gcd_all
+
+end module sphere_row_ecrit
