@@ -12,10 +12,8 @@ program c12_methods
     use sphere_row_methods, only: method_t, new_method, reference_method, method_prepare, &
         method_run, method_name, method_label, method_setting, method_v_tol, kind_name, &
         method_engine, method_absolute, method_ode, method_stepping, stepper_rk8pd, &
-        stepper_rkf45
-    use sphere_row_kind_engines, only: built_kinds, kind_info, kind_info_t
+        stepper_rkf45, engine_methods, kind_sqrt_tiny, method_time
     use sphere_row_study_cli, only: cli_t, start_program, read_keys, fail, stop_unless_normal
-    use sphere_row_sorting, only: median
     implicit none
 
     character(len=*), parameter :: name = "c12-methods"
@@ -101,8 +99,8 @@ contains
             1.0e-11_qp, 1.0e-13_qp]
         real(qp), parameter :: rkf45_tols(3) = [1.0e-4_qp, 1.0e-8_qp, 1.0e-12_qp]
         real(qp), parameter :: steps(5) = [1.0e-1_qp, 1.0e-2_qp, 1.0e-3_qp, 1.0e-4_qp, 1.0e-5_qp]
-        methods = [engines_of_each_kind(), &
-            new_method(method_engine, dp, tol=sqrt_tiny(dp)), &
+        methods = [engine_methods(tiny_tol=.false.), &
+            new_method(method_engine, dp, tol=kind_sqrt_tiny(dp)), &
             new_method(method_absolute, dp), new_method(method_absolute, qp)]
         in_map = [(.true., k=1, size(methods))]
         do k = 1, size(ode_tols)
@@ -151,7 +149,8 @@ contains
                 ! times in units of L/v0 (L = max(d, a) = 1 here).
                 err = max(cmp%v_error/scene%v0, &
                     cmp%t_error*scene%v0/max(scene%d, maxval(scene%a)))
-                call time_runs(methods(m), seconds, batches, runs)
+                call method_time(methods(m), min_time, repeats, seconds, batches, &
+                    runs)
                 write (unit, "(a)") itoa(s)//tab//str(scenes(s))//tab//str(scenes(s) - e_crit)//tab &
                     //method_label(methods(m))//tab//method_name(methods(m))//tab &
                     //kind_name(methods(m)%precision)//tab//str(method_setting(methods(m))) &
@@ -232,7 +231,7 @@ contains
         real(qp) :: right_log, wrong_log, mid_log
         integer :: m, k, k_right, n_right, unit, j, ref_limit
         logical :: reliable
-        chosen = [engines_of_each_kind(), engines_with_tiny_tol(), &
+        chosen = [engine_methods(tiny_tol=.false.), engine_methods(tiny_tol=.true.), &
             new_method(method_absolute, dp), new_method(method_absolute, qp)]
         ! The reference itself holds to the decade where it still ends normally.
         ref_limit = 0
@@ -277,32 +276,6 @@ contains
         close (unit)
     end subroutine min_distance
 
-    !> The engine in every kind built, with its kind's epsilon as tolerance.
-    function engines_of_each_kind() result(engines)
-        type(method_t), allocatable :: engines(:)
-        integer :: k
-        engines = [(new_method(method_engine, built_kinds(k)%precision), &
-            k = 1, size(built_kinds))]
-    end function engines_of_each_kind
-
-    !> The engine in every kind built narrower than the reference's (the
-    !> widest, last of built_kinds), with
-    !> tol = sqrt(tiny) of its kind: how far relative variables reach.
-    function engines_with_tiny_tol() result(engines)
-        type(method_t), allocatable :: engines(:)
-        integer :: k
-        engines = [(new_method(method_engine, built_kinds(k)%precision, &
-            tol=built_kinds(k)%sqrt_tiny), k = 1, size(built_kinds) - 1)]
-    end function engines_with_tiny_tol
-
-    !> sqrt(tiny) of a kind built, in real128.
-    pure real(qp) function sqrt_tiny(precision)
-        integer, intent(in) :: precision
-        type(kind_info_t) :: info
-        info = kind_info(precision)
-        sqrt_tiny = info%sqrt_tiny
-    end function sqrt_tiny
-
     !> Whether `method` gives the reference's collision sequence at
     !> e = e_c + 10^log_distance.
     logical function right_at(method, log_distance, run) result(right)
@@ -346,52 +319,6 @@ contains
         write (unit, "(a)") "stepping_max_steps"//tab//itoa(max_steps)
         close (unit)
     end subroutine platform
-
-    !> Median CPU time per run of a prepared method: `batches` batches of
-    !> `runs` runs each, so that the whole takes about min_time; a run slower
-    !> than min_time is timed once. The batch size is calibrated by doubling
-    !> the number of runs until they take a measurable part of a batch, so that
-    !> a coarse clock cannot make a fast run look free.
-    subroutine time_runs(method, seconds, batches, runs)
-        type(method_t), intent(inout) :: method
-        real(qp), intent(out) :: seconds
-        integer, intent(out) :: batches, runs
-        type(outcome_t) :: run
-        real(dp), allocatable :: samples(:)
-        real(dp) :: t0, t1, single, batch_time
-        integer :: b, j
-        integer, parameter :: max_runs = 2**24
-        batch_time = real(min_time, dp)/repeats
-        call method_run(method, run)
-        runs = 1
-        do
-            call cpu_time(t0)
-            do j = 1, runs
-                call method_run(method, run)
-            end do
-            call cpu_time(t1)
-            if (t1 - t0 >= 0.25_dp*batch_time .or. runs >= max_runs) exit
-            runs = 2*runs
-        end do
-        single = (t1 - t0)/runs
-        if (runs == 1 .and. single >= real(min_time, dp)) then
-            seconds = single
-            batches = 1
-            return
-        end if
-        batches = repeats
-        runs = max(1, min(max_runs, ceiling(batch_time/max(single, tiny(1.0_dp)))))
-        allocate (samples(batches))
-        do b = 1, batches
-            call cpu_time(t0)
-            do j = 1, runs
-                call method_run(method, run)
-            end do
-            call cpu_time(t1)
-            samples(b) = (t1 - t0)/runs
-        end do
-        seconds = median(samples)
-    end subroutine time_runs
 
     subroutine scene_at(e, scene)
         real(qp), intent(in) :: e
