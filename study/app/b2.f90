@@ -26,7 +26,12 @@ program c12_b2
     integer(8), allocatable :: seen(:)
     real(qp) :: e, diff, max_diff, single, max_single, e_single_min, v_plain
 
-    call define_keys()
+    call start_program(cli, "c12-b2", &
+        "C12 task b2: final velocities v_i(e) from e = 1 down to 0, each compared"//nl// &
+        "with the polynomial in e of its own collision sequence."//nl// &
+        "Writes OUT/b2_velocities.tsv, b2_closed_forms.tsv, b2_answers.tsv.")
+    call cli%add_int("n_grid", "1001", "points of the grid of e in [0, 1]", lo=2)
+    call add_scene_keys(cli, e_set_by="the grid of e")
     call read_keys(cli, scene)
     out = cli%get_word("out")
     n_grid = cli%get_int("n_grid")
@@ -38,16 +43,6 @@ program c12_b2
     call write_answers()
 
 contains
-
-    !> The keys of c12-b2.
-    subroutine define_keys()
-        call start_program(cli, "c12-b2", &
-            "C12 task b2: final velocities v_i(e) from e = 1 down to 0, each compared"//nl// &
-            "with the polynomial in e of its own collision sequence."//nl// &
-            "Writes OUT/b2_velocities.tsv, b2_closed_forms.tsv, b2_answers.tsv.")
-        call cli%add_int("n_grid", "1001", "points of the grid of e in [0, 1]", lo=2)
-        call add_scene_keys(cli, e_set_by="the grid of e")
-    end subroutine define_keys
 
     !> b2_velocities.tsv and b2_closed_forms.tsv, with their headers.
     subroutine open_tables()

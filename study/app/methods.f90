@@ -12,7 +12,8 @@ program c12_methods
     use sphere_row_methods, only: method_t, new_method, reference_method, method_prepare, &
         method_run, method_name, method_label, method_setting, method_v_tol, kind_name, &
         method_engine, method_absolute, method_ode, method_stepping, stepper_rk8pd, &
-        stepper_rkf45, engine_methods, kind_sqrt_tiny, method_time
+        stepper_rkf45, engine_methods, method_time
+    use sphere_row_kind_engines, only: kind_info, kind_info_t
     use sphere_row_study_cli, only: cli_t, start_program, read_keys, fail, stop_unless_normal
     implicit none
 
@@ -99,8 +100,10 @@ contains
             1.0e-11_qp, 1.0e-13_qp]
         real(qp), parameter :: rkf45_tols(3) = [1.0e-4_qp, 1.0e-8_qp, 1.0e-12_qp]
         real(qp), parameter :: steps(5) = [1.0e-1_qp, 1.0e-2_qp, 1.0e-3_qp, 1.0e-4_qp, 1.0e-5_qp]
+        type(kind_info_t) :: real64
+        real64 = kind_info(dp)
         methods = [engine_methods(tiny_tol=.false.), &
-            new_method(method_engine, dp, tol=kind_sqrt_tiny(dp)), &
+            new_method(method_engine, dp, tol=real64%sqrt_tiny), &
             new_method(method_absolute, dp), new_method(method_absolute, qp)]
         in_map = [(.true., k=1, size(methods))]
         do k = 1, size(ode_tols)

@@ -25,7 +25,7 @@ module sphere_row_methods
     public :: reference_tol
     public :: new_method, reference_method, method_prepare, method_run
     public :: method_name, method_label, method_setting, method_v_tol, kind_name
-    public :: engine_methods, kind_sqrt_tiny, method_time
+    public :: engine_methods, method_time
 
     !> Method 1: the event engine in relative variables (sphere_row).
     integer, parameter :: method_engine = 1
@@ -310,14 +310,6 @@ contains
                 k=1, size(built_kinds))]
         end if
     end function engine_methods
-
-    !> sqrt(tiny) of a real kind built, in real128.
-    pure real(qp) function kind_sqrt_tiny(precision) result(root)
-        integer, intent(in) :: precision
-        type(kind_info_t) :: info
-        info = kind_info(precision)
-        root = info%sqrt_tiny
-    end function kind_sqrt_tiny
 
     !> Median CPU time per run of a prepared method: `batches` batches of
     !> `runs` runs each, so that the whole takes about `min_time` seconds
