@@ -14,6 +14,9 @@ program c12_b1
     character(len=*), parameter :: nl = new_line("a")
     !> Class of a run with a collapse: its count depends on tol, not on e alone.
     integer(8), parameter :: collapsed_class = 0_8
+    !> Smallest n of a point in the power-law fit: below it the run is too far
+    !> from e_crit for the asymptote n ~ (e - e_crit)^(-1/2).
+    integer, parameter :: min_fit_collisions = 200
     type(cli_t) :: cli
     character(len=:), allocatable :: out
     character(len=300) :: msg
@@ -21,7 +24,7 @@ program c12_b1
     type(run_t) :: run
     type(event_log_t) :: events
     integer, allocatable :: pairs(:), cycle(:)
-    integer :: stat, unit, j, n_scan, n_bisect_max, n_delta, n_boundaries, period, k
+    integer :: stat, unit, j, n_scan, n_bisect_max, n_boundaries, period, k
     integer :: n_intervals, n_fit, iterations, stat_c
     real(qp) :: resolution, tol_fine, e_lo, e_hi, e_c, e_c_sim, closed, lo, hi, mid
     real(qp) :: sx, sy, sxx, sxy, slope, intercept, e_quasi, delta
@@ -93,11 +96,16 @@ contains
     !> Step 3: the critical restitution by simulation alone, with a tolerance
     !> near the bottom of real128's range: bisect finite against collapsed.
     subroutine critical_by_simulation()
+        !> Half-width of the bracket around e_quasi in which the simulation alone
+        !> bisects collapsed against finite runs.
+        real(qp), parameter :: simulation_bracket = 0.01_qp
+        !> Most bisection steps of that bracket.
+        integer, parameter :: max_bisection_steps = 200
         scene%tol = tol_fine
-        lo = e_quasi - 0.01_qp
-        hi = e_quasi + 0.01_qp
+        lo = e_quasi - simulation_bracket
+        hi = e_quasi + simulation_bracket
         iterations = 0
-        do while (hi - lo > resolution .and. iterations < 200)
+        do while (hi - lo > resolution .and. iterations < max_bisection_steps)
             mid = 0.5_qp*(lo + hi)
             scene%e = mid
             call simulate(scene, run)
@@ -118,19 +126,33 @@ contains
     !> run's limit is taken by the fallback alone, not as soon as the cycle is
     !> certified: it is wanted for its long tail of the cycle.
     subroutine critical_from_cycle()
-        e_lo = e_c_sim - 0.001_qp
+        !> How far below the simulated bound the run that shows the collapse cycle
+        !> starts: a collapsed run, yet close enough to e_crit to follow the cycle
+        !> for thousands of collisions.
+        real(qp), parameter :: cycle_run_offset = 0.001_qp
+        !> Part of the cycle run's collisions searched for the period: the end of
+        !> the run, where the fallback takes the limit, is left out.
+        integer, parameter :: cycle_part_num = 3, cycle_part_den = 4
+        !> Collisions at the end of that part that must repeat with the period.
+        integer, parameter :: period_window = 48
+        !> Longest period looked for.
+        integer, parameter :: max_period = 24
+        !> How far above the simulated bound the discriminant of the cycle's rate
+        !> map is bracketed.
+        real(qp), parameter :: discriminant_bracket = 0.01_qp
+        e_lo = e_c_sim - cycle_run_offset
         scene%e = e_lo
         scene%closed_form_limits = .false.
         call simulate(scene, run, events)
         scene%closed_form_limits = .true.
         call sequence_of(events, pairs, before_collapse=.true.)
-        pairs = pairs(:3*size(pairs)/4)
-        period = tail_period(pairs, 48, 24)
+        pairs = pairs(:cycle_part_num*size(pairs)/cycle_part_den)
+        period = tail_period(pairs, period_window, max_period)
         e_c = -1.0_qp
         stat_c = -1
         if (period > 0) then
             cycle = pairs(size(pairs) - period + 1:)
-            e_hi = e_c_sim + 0.01_qp
+            e_hi = e_c_sim + discriminant_bracket
             call critical_restitution(scene%m, cycle, e_lo, e_hi, e_c, stat_c)
         end if
         if (stat_c /= status_normal) e_c = -1.0_qp
@@ -140,7 +162,10 @@ contains
     !> Step 5, b1_critical.tsv: n against the distance to e_c with the fine
     !> tolerance, and the power law fitted to it.
     subroutine write_critical()
-        n_delta = 25
+        !> Rows of b1_critical.tsv: e - e_crit log-spaced over the decades below.
+        integer, parameter :: n_delta = 25
+        !> Largest and smallest e - e_crit of b1_critical.tsv, as powers of ten.
+        real(qp), parameter :: delta_top_decade = -1.0_qp, delta_bottom_decade = -7.0_qp
         call open_table(out, "b1_critical.tsv", "delta=e-e_crit"//tab//"e"//tab// &
             "collisions"//tab//"status"//tab//"collisions*sqrt(delta)", unit, stat, msg)
         call stop_unless_normal(stat, msg)
@@ -150,7 +175,8 @@ contains
         sxy = 0
         n_fit = 0
         do k = 1, n_delta
-            delta = 10.0_qp**(-1.0_qp - 6.0_qp*real(k - 1, qp)/real(n_delta - 1, qp))
+            delta = 10.0_qp**(delta_top_decade + (delta_bottom_decade - delta_top_decade) &
+                *real(k - 1, qp)/real(n_delta - 1, qp))
             if (e_c > 0) then
                 scene%e = e_c + delta
             else
@@ -159,8 +185,8 @@ contains
             call simulate(scene, run)
             write (unit, "(a)") str(delta)//tab//str(scene%e)//tab//itoa(run%n)//tab// &
                 status_word(run%status)//tab//str(run%n*sqrt(delta))
-            ! fit log n = intercept + slope log delta where the asymptote holds (n >= 200)
-            if (run%status == status_normal .and. run%n >= 200) then
+            ! fit log n = intercept + slope log delta where the asymptote holds
+            if (run%status == status_normal .and. run%n >= min_fit_collisions) then
                 sx = sx + log(delta)
                 sy = sy + log(real(run%n, qp))
                 sxx = sxx + log(delta)**2
@@ -200,9 +226,9 @@ contains
             "velocities below any fixed tolerance, so this bound lies above e_crit")
         call write_answer(unit, "b1.exponent", str(slope), "theory", str(-0.5_qp), &
             str(slope + 0.5_qp), "least-squares slope of log n against log(e - e_crit) over "// &
-            itoa(n_fit)//" points with n >= 200; near e_crit the cycle map has eigenvalues "// &
-            "r exp(+-i theta) with theta ~ sqrt(e - e_crit), and the collisions end after "// &
-            "about pi/theta cycles")
+            itoa(n_fit)//" points with n >= "//itoa(min_fit_collisions)//"; near e_crit the "// &
+            "cycle map has eigenvalues r exp(+-i theta) with theta ~ sqrt(e - e_crit), and "// &
+            "the collisions end after about pi/theta cycles")
         call write_answer(unit, "b1.prefactor", str(exp(intercept)), "-", "-", "-", &
             "n ~ prefactor (e - e_crit)^exponent")
         call write_answer(unit, "b1.e_quasi_plastic", str(e_quasi), "-", "-", "-", &

@@ -35,8 +35,6 @@ program c12_methods
     character(len=300) :: msg
     type(method_t), allocatable :: methods(:)
     logical, allocatable :: in_map(:)
-    real(qp), allocatable :: scenes(:)
-    logical, allocatable :: in_costs(:)
     integer :: repeats, points, stat
     integer(int64) :: max_steps
     real(qp) :: min_time
@@ -54,9 +52,6 @@ program c12_methods
     if (stat /= 0) call fail("out = "//out_dir//": the directory cannot be created")
 
     call method_list()
-    ! The work-precision scenes; the costs table takes e = 0.2 and e = 0.172.
-    scenes = [0.2_qp, e_crit + 1.0e-2_qp, e_crit + 1.0e-3_qp, 0.172_qp, e_crit + 1.0e-4_qp]
-    in_costs = [.true., .false., .false., .true., .false.]
     call work_precision()
     call lap("work-precision and costs")
     call stability()
@@ -100,6 +95,10 @@ contains
             1.0e-11_qp, 1.0e-13_qp]
         real(qp), parameter :: rkf45_tols(3) = [1.0e-4_qp, 1.0e-8_qp, 1.0e-12_qp]
         real(qp), parameter :: steps(5) = [1.0e-1_qp, 1.0e-2_qp, 1.0e-3_qp, 1.0e-4_qp, 1.0e-5_qp]
+        !> The smallest time step on the map.
+        real(qp), parameter :: finest_mapped_step = 1.0e-4_qp
+        !> The one rkf45 tolerance on the map (1e-8).
+        integer, parameter :: mapped_rkf45 = 2
         type(kind_info_t) :: real64
         real64 = kind_info(dp)
         methods = [engine_methods(tiny_tol=.false.), &
@@ -108,21 +107,29 @@ contains
         in_map = [(.true., k=1, size(methods))]
         do k = 1, size(ode_tols)
             methods = [methods, new_method(method_ode, tol=ode_tols(k), stepper=stepper_rk8pd)]
-            in_map = [in_map, mod(k, 2) == 1]
+            in_map = [in_map, mod(k, 2) == 1]  ! 1e-3, 1e-7, 1e-11
         end do
         do k = 1, size(rkf45_tols)
             methods = [methods, new_method(method_ode, tol=rkf45_tols(k), stepper=stepper_rkf45)]
-            in_map = [in_map, k == 2]
+            in_map = [in_map, k == mapped_rkf45]
         end do
         do k = 1, size(steps)
             methods = [methods, new_method(method_stepping, h=steps(k), max_steps=max_steps)]
-            in_map = [in_map, steps(k) >= 1.0e-4_qp]
+            in_map = [in_map, steps(k) >= finest_mapped_step]
         end do
     end subroutine method_list
 
     !> methods_work_precision.tsv and methods_costs.tsv: every method on each
     !> scene, timed, against the reference.
     subroutine work_precision()
+        !> The scenes: a finite run (e = 0.2), three above e_c by a decade each,
+        !> and e = 0.172 just above e_c.
+        real(qp), parameter :: scenes(*) = [0.2_qp, e_crit + 1.0e-2_qp, e_crit + 1.0e-3_qp, &
+            0.172_qp, e_crit + 1.0e-4_qp]
+        !> The scenes of the costs table: e = 0.2 and e = 0.172.
+        logical, parameter :: in_costs(*) = [.true., .false., .false., .true., .false.]
+        !> Nanoseconds in a second.
+        real(qp), parameter :: ns_per_s = 1.0e9_qp
         type(outcome_t) :: ref, run
         type(comparison_t) :: cmp
         type(scene_t) :: scene
@@ -167,7 +174,7 @@ contains
                     write (unit_cost, "(a)") str(scenes(s))//tab//method_label(methods(m))//tab &
                         //method_name(methods(m))//tab//kind_name(methods(m)%precision)//tab &
                         //str(method_setting(methods(m)))//tab//itoa(ref%n)//tab//itoa(run%n) &
-                        //tab//str(1.0e9_qp*seconds)//tab//str(1.0e9_qp*seconds/max(1, run%n)) &
+                        //tab//str(ns_per_s*seconds)//tab//str(ns_per_s*seconds/max(1, run%n)) &
                         //tab//category_word(classify(ref, run, &
                         method_v_tol(methods(m), scene%v0)))
                 end if
@@ -180,12 +187,14 @@ contains
     !> methods_stability.tsv: the category of each method on the map over e,
     !> from 1 down through e_c to 0, log-spaced in |e - e_c| from 1e-7 on.
     subroutine stability()
+        !> One point in this many lies below e_c.
+        integer, parameter :: below_part = 4
         type(outcome_t) :: ref, run
         type(scene_t) :: scene
         real(qp), allocatable :: es(:)
         real(qp) :: lo, hi
         integer :: n_above, n_below, j, m, unit, row, category
-        n_below = points/4
+        n_below = points/below_part
         n_above = points - n_below
         allocate (es(points))
         lo = log10(closest)
