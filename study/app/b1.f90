@@ -237,6 +237,11 @@ contains
             "'quasi-plastic case reached'")
         call write_answer(unit, "b1.scan_points", itoa(n_scan), "-", "-", "-", &
             "e from 1 down to 0 in equal steps")
+        call write_answer(unit, "b1.resolution", str(resolution), "-", "-", "-", &
+            "width to which each change of the scan's collision sequence is bisected")
+        call write_answer(unit, "b1.tol_fine", str(tol_fine), "-", "-", "-", &
+            "tolerance of the runs near e_crit: the simulated bound, the cycle run and "// &
+            "b1_critical.tsv")
         call write_answer(unit, "b1.intervals", itoa(n_intervals), "-", "-", "-", &
             "intervals of constant n and sequence found, each end bisected to "// &
             str(resolution)//" (changes with n > "//itoa(n_bisect_max)//" on both sides are "// &
