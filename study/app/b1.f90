@@ -6,7 +6,8 @@ program c12_b1
         status_normal, status_collapsed, itoa
     use sphere_row_tables, only: open_table, write_answer, answer_header, tab
     use sphere_row_analysis, only: sequence_of, sequence_text, sequence_hash, tail_period, &
-        critical_restitution, bisect_changes
+        critical_restitution
+    use sphere_row_bisection, only: bisect, bisect_changes
     use sphere_row_study_cli, only: cli_t, add_scene_keys, start_program, read_keys, &
         stop_unless_normal
     use sphere_row_sorting, only: sort
@@ -25,7 +26,7 @@ program c12_b1
     type(event_log_t) :: events
     integer, allocatable :: pairs(:), cycle(:)
     integer :: stat, unit, j, n_scan, n_bisect_max, n_boundaries, period, k
-    integer :: n_intervals, n_fit, iterations, stat_c
+    integer :: n_intervals, n_fit, stat_c
     real(qp) :: resolution, tol_fine, e_lo, e_hi, e_c, e_c_sim, closed, lo, hi, mid
     real(qp) :: sx, sy, sxx, sxy, slope, intercept, e_quasi, delta
     real(qp), allocatable :: e_scan(:), boundaries(:)
@@ -104,18 +105,7 @@ contains
         scene%tol = tol_fine
         lo = e_quasi - simulation_bracket
         hi = e_quasi + simulation_bracket
-        iterations = 0
-        do while (hi - lo > resolution .and. iterations < max_bisection_steps)
-            mid = 0.5_qp*(lo + hi)
-            scene%e = mid
-            call simulate(scene, run)
-            if (run%status == status_collapsed) then
-                lo = mid
-            else
-                hi = mid
-            end if
-            iterations = iterations + 1
-        end do
+        call bisect(collapses, lo, hi, resolution, max_bisection_steps)
         e_c_sim = hi
     end subroutine critical_by_simulation
 
@@ -310,6 +300,14 @@ contains
         end do
         close (unit)
     end subroutine write_scan
+
+    !> Whether the run at e with the scene's tolerance collapses, for bisect.
+    logical function collapses(e)
+        real(qp), intent(in) :: e
+        scene%e = e
+        call simulate(scene, run)
+        collapses = run%status == status_collapsed
+    end function collapses
 
     !> classify as a function, for bisect_changes.
     function class_of(e) result(class)

@@ -5,8 +5,9 @@
 program c12_methods
     use, intrinsic :: iso_fortran_env, only: output_unit, int64, &
         compiler_version, compiler_options
+    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
     use sphere_row, only: dp, qp, scene_t, scene_init, status_normal, status_word, str, itoa
-    use sphere_row_tables, only: cpu_model
+    use sphere_row_tables, only: cpu_model, tab
     use sphere_row_outcome, only: outcome_t, comparison_t, compare_outcomes, classify, &
         category_word
     use sphere_row_methods, only: method_t, new_method, reference_method, method_prepare, &
@@ -15,11 +16,11 @@ program c12_methods
         stepper_rkf45, engine_methods, method_time
     use sphere_row_kind_engines, only: kind_info, kind_info_t
     use sphere_row_study_cli, only: cli_t, start_program, read_keys, fail, stop_unless_normal
+    use sphere_row_bisection, only: bisect
     implicit none
 
     character(len=*), parameter :: name = "c12-methods"
     character(len=*), parameter :: nl = new_line("a")
-    character(len=*), parameter :: tab = achar(9)
     !> The critical restitution of the definition's scene, 3 - 2 sqrt(2).
     real(qp), parameter :: e_crit = 3.0_qp - 2.0_qp*sqrt(2.0_qp)
     !> Closest distance to e_c of the stability map: the reference's count is
@@ -39,6 +40,8 @@ program c12_methods
     integer(int64) :: max_steps
     real(qp) :: min_time
     real :: clock_start, clock_end
+    !> The method under test in min_distance's bisection.
+    type(method_t) :: tested
 
     call cpu_time(clock_start)
     call define_keys()
@@ -240,9 +243,10 @@ contains
         type(method_t), allocatable :: chosen(:)
         type(outcome_t) :: ref, run
         type(scene_t) :: scene
-        real(qp) :: right_log, wrong_log, mid_log
-        integer :: m, k, k_right, n_right, unit, j, ref_limit
+        real(qp) :: right_log, wrong_log, nan
+        integer :: m, k, k_right, n_right, unit, ref_limit
         logical :: reliable
+        nan = ieee_value(nan, ieee_quiet_nan)
         chosen = [engine_methods(tiny_tol=.false.), engine_methods(tiny_tol=.true.), &
             new_method(method_absolute, dp), new_method(method_absolute, qp)]
         ! The reference itself holds to the decade where it still ends normally.
@@ -270,23 +274,26 @@ contains
             wrong_log = right_log - 1
             reliable = k_right < ref_limit
             if (k_right > 0 .and. reliable) then
-                do j = 1, refine_steps
-                    mid_log = 0.5_qp*(right_log + wrong_log)
-                    if (right_at(chosen(m), mid_log, run)) then
-                        right_log = mid_log
-                    else
-                        wrong_log = mid_log
-                    end if
-                end do
+                tested = chosen(m)
+                call bisect(wrong_at, wrong_log, right_log, 0.0_qp, refine_steps)
             end if
             write (unit, "(a)") method_label(chosen(m))//tab//method_name(chosen(m))//tab &
                 //kind_name(chosen(m)%precision)//tab//str(method_setting(chosen(m)))//tab &
-                //distance_str(-real(k_right, qp), k_right > 0)//tab//itoa(n_right)//tab &
-                //distance_str(right_log, k_right > 0 .and. reliable)//tab &
+                //str(merge(10.0_qp**(-real(k_right, qp)), nan, k_right > 0))//tab &
+                //itoa(n_right)//tab &
+                //str(merge(10.0_qp**right_log, nan, k_right > 0 .and. reliable))//tab &
                 //str(10.0_qp**(-ref_limit))
         end do
         close (unit)
     end subroutine min_distance
+
+    !> Whether the method `tested` misses the reference's collision sequence
+    !> at e = e_c + 10^log_distance, for bisect.
+    logical function wrong_at(log_distance)
+        real(qp), intent(in) :: log_distance
+        type(outcome_t) :: run
+        wrong_at = .not. right_at(tested, log_distance, run)
+    end function wrong_at
 
     !> Whether `method` gives the reference's collision sequence at
     !> e = e_c + 10^log_distance.
@@ -368,17 +375,5 @@ contains
             word = "no"
         end if
     end function yes_no
-
-    !> 10^log_distance with every digit, or nan where nothing was found.
-    function distance_str(log_distance, found) result(text)
-        real(qp), intent(in) :: log_distance
-        logical, intent(in) :: found
-        character(len=:), allocatable :: text
-        if (found) then
-            text = str(10.0_qp**log_distance)
-        else
-            text = "nan"
-        end if
-    end function distance_str
 
 end program c12_methods

@@ -3,8 +3,7 @@
 !> from the per-task answer tables.
 program c12_summary
     use sphere_row_tables, only: open_table, tab, split_tabs
-    use sphere_row, only: qp
-    use sphere_row_args, only: short_text
+    use sphere_row, only: qp, short_text
     use sphere_row_study_cli, only: cli_t, start_program, read_keys, fail, stop_unless_normal
     implicit none
     character(len=*), parameter :: nl = new_line("a")
