@@ -8,8 +8,11 @@
 !> write_scene_files into build/test_front/.
 module test_front
     use sphere_row, only: qp, scene_t, itoa
-    use sphere_row_args, only: cli_t, string_t, add_scene_keys, scene_from_cli, read_real, &
-        read_int, read_reals, is_real_text, is_int_text, printable, short_text
+    use sphere_row_cli, only: cli_t, string_t
+    use sphere_row_scene_keys, only: add_scene_keys, scene_from_cli
+    use sphere_row_read, only: read_real, read_int, read_reals, is_real_text, is_int_text, &
+        printable
+    use sphere_row_format, only: short_text
     use sphere_row_error, only: input_error_t => error_t
     use testsuite, only: error_t, unittest_t, new_unittest, check
     use test_cli, only: program_path
