@@ -1,5 +1,5 @@
-!> c12-methods: the four methods of the comparison compared against the reference
-!> engine (real128) on the definition's scene, written as TSV tables:
+!> The program c12-methods: the four methods of the comparison compared against
+!> the reference engine (real128) on the definition's scene, written as TSV tables:
 !> work-precision, stability over e, smallest distance to e_c per precision,
 !> costs per collision, and the platform the times were taken on.
 program c12_methods

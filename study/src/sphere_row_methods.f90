@@ -62,19 +62,19 @@ module sphere_row_methods
         integer :: id = method_engine
         !> Real kind the method computes in (sp, dp, xdp or qp).
         integer :: precision = qp
-        !> Engine: tolerance of insignificant rates and gaps (negative: the
-        !> kind's epsilon, the engine's default). ODE: the accuracy asked for.
+        !> The engine's tolerance of insignificant rates and gaps (negative: the
+        !> kind's epsilon, the engine's default), or the ODE's accuracy asked for.
         real(qp) :: tol = -1.0_qp
-        !> Time stepping: the step h [L/V].
+        !> The step h [L/V] of time stepping.
         real(qp) :: h = 0.0_qp
-        !> ODE: stepper_rk8pd or stepper_rkf45.
+        !> The ODE's stepper: stepper_rk8pd or stepper_rkf45.
         integer :: stepper = stepper_rk8pd
-        !> Time stepping: the step budget.
+        !> The step budget of time stepping.
         integer(int64) :: max_steps = default_max_steps
         !> Number of spheres of the prepared scene (0: not prepared).
         integer :: p = 0
-        !> Engine: the engine in the method's kind with its prepared scene and
-        !> work space, kept here so that a timed run allocates nothing.
+        !> The engine in the method's kind with its prepared scene and work
+        !> space, kept here so that a timed run allocates nothing.
         class(kind_engine_t), allocatable :: engine
         !> Prepared scene of the real64 methods (absolute, ODE, stepping).
         type(scene_dp_t) :: scene_dp
