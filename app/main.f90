@@ -4,7 +4,8 @@ program sphere_row_main
     use sphere_row, only: qp, scene_t, run_t, event_log_t, simulate, str, status_word, &
         status_invalid, event_collision, event_collapse, itoa, auto_t, simulate_auto, &
         simulate_in_dp
-    use sphere_row_args, only: cli_t, add_scene_keys, scene_from_cli, read_command_line, fail
+    use sphere_row_cli, only: cli_t, read_command_line, fail
+    use sphere_row_scene_keys, only: add_scene_keys, scene_from_cli
     use sphere_row_error, only: error_t, fatal_error
     implicit none
     type(cli_t) :: cli

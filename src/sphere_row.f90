@@ -10,7 +10,7 @@ module sphere_row
     use sphere_row_kinds, only: sp, dp, xdp, qp
     use sphere_row_status, only: status_normal, status_collapsed, status_max_collisions, &
         status_invalid, event_start, event_collision, event_collapse, status_word
-    use sphere_row_format, only: real_str, itoa
+    use sphere_row_format, only: real_str, short_text, itoa
     use sphere_row_engine_qp, only: scene_t, run_t, &
         event_log_t, scene_init_qp => scene_init_wp, &
         scene_check_qp => scene_check_wp, simulate_qp => simulate_wp, &
@@ -42,7 +42,8 @@ module sphere_row
     private
     public :: sp, dp, xdp, qp
     public :: status_normal, status_collapsed, status_max_collisions, status_invalid
-    public :: event_start, event_collision, event_collapse, status_word, real_str, itoa
+    public :: event_start, event_collision, event_collapse, status_word, real_str, &
+        short_text, itoa
     public :: scene_t, run_t, event_log_t
 #ifdef SPHERE_ROW_XDP
     public :: scene_xdp_t, run_xdp_t, event_log_xdp_t

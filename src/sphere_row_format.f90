@@ -1,11 +1,12 @@
-!> Text form of numbers: reals with every significant digit of their kind,
-!> integers of either kind with as many places as they need.
+!> Text form of numbers: reals with every significant digit of their kind
+!> (tables), reals in the fewest digits that read back (messages, `--help`,
+!> prose), integers of either kind with as many places as they need.
 module sphere_row_format
     use, intrinsic :: iso_fortran_env, only: int64
     use sphere_row_kinds, only: qp
     implicit none
     private
-    public :: real_str, itoa
+    public :: real_str, short_text, itoa
 
     !> Text of an integer of either kind.
     interface itoa
@@ -57,5 +58,78 @@ contains
         write (buf, form) x
         str = trim(adjustl(buf))
     end function real_str
+
+    !> The shortest text (at most `digits` significant digits, default as many
+    !> as needed) that reads back as `x`: 0.2, 1, 1000000, 1.93e-34. A bound
+    !> cut to a few digits is rounded `toward` "down" or "up" if asked, so that
+    !> the text is still on the allowed side.
+    pure function short_text(x, digits, toward) result(text)
+        real(qp), intent(in) :: x
+        integer, intent(in), optional :: digits
+        character(len=*), intent(in), optional :: toward
+        character(len=:), allocatable :: text
+        character(len=80) :: buffer, form
+        character(len=3) :: mode
+        real(qp) :: y
+        integer :: d, most, ios
+        logical :: plain
+        most = 37
+        if (present(digits)) most = digits
+        mode = ""
+        if (present(toward)) then
+            if (toward == "down") mode = "rd,"
+            if (toward == "up") mode = "ru,"
+        end if
+        plain = x == 0.0_qp .or. (abs(x) >= 1.0e-3_qp .and. abs(x) < 1.0e7_qp)
+        do d = 1, most
+            if (plain) then
+                write (form, "('(', a, 'f0.', i0, ')')") trim(mode), d
+            else
+                write (form, "('(', a, 'es60.', i0, 'e5)')") trim(mode), d - 1
+            end if
+            write (buffer, form) x
+            read (buffer, *, iostat=ios) y
+            if (ios == 0 .and. y == x) exit
+        end do
+        text = tidy_number(trim(adjustl(buffer)))
+    end function short_text
+
+    !> Tidy a number written by short_text: no trailing zeros or '.' in the
+    !> mantissa, a leading 0 before '.', a lower-case exponent without '+'
+    !> and leading zeros: "1.00" -> "1", ".5" -> "0.5", "1.9E-0034" -> "1.9e-34".
+    pure function tidy_number(text) result(tidy)
+        character(len=*), intent(in) :: text
+        character(len=:), allocatable :: tidy
+        character(len=:), allocatable :: m, exponent, sign
+        integer :: e
+        e = scan(text, "eEdD")
+        if (e == 0) then
+            m = text
+            exponent = ""
+        else
+            m = text(:e - 1)
+            exponent = text(e + 1:)
+        end if
+        if (index(m, ".") > 0) then
+            do while (len(m) > 1)
+                if (m(len(m):len(m)) /= "0") exit
+                m = m(:len(m) - 1)
+            end do
+            if (m(len(m):len(m)) == ".") m = m(:len(m) - 1)
+        end if
+        if (len(m) == 0) m = "0"
+        if (m(1:1) == ".") m = "0"//m
+        if (len(m) > 1) then
+            if (m(1:2) == "-.") m = "-0"//m(2:)
+        end if
+        if (len(exponent) > 0) then
+            sign = ""
+            if (exponent(1:1) == "-") sign = "-"
+            exponent = exponent(verify(exponent, "+-0"):)
+            tidy = m//"e"//sign//exponent
+        else
+            tidy = m
+        end if
+    end function tidy_number
 
 end module sphere_row_format

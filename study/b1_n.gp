@@ -3,8 +3,10 @@
 if (term eq 'png') { set terminal pngcairo size 1000,600 font ',11' } else { set terminal svg size 1000,600 dynamic font ',11' }
 set output out
 set datafile separator tab
+set datafile columnheaders
 f = dir.'/b1_scan.tsv'
-ecrit = real(system("awk -F'\t' '$1==\"b1.e_crit\"{print $2}' ".dir."/b1_answers.tsv"))
+stats dir.'/b1_answers.tsv' using (strcol('key') eq 'b1.e_crit' ? column('value') : NaN) nooutput
+ecrit = STATS_max
 set title sprintf("C12 task b1: number of collisions n(e); inelastic collapse below e_{crit} = %.12f", ecrit)
 set xlabel "restitution coefficient e"
 set ylabel "collisions n"
@@ -14,5 +16,5 @@ set grid
 set key top right box opaque
 set arrow from ecrit, graph 0 to ecrit, graph 1 nohead dt 2 lc rgb '#d62728'
 set label "e_{crit}" at ecrit, graph 0.95 offset 1,0 tc rgb '#d62728'
-plot f using ((strcol(3) eq 'normal') ? $1 : NaN):2 with steps lw 2 lc rgb '#1f77b4' title 'n(e), run ends (finite)', \
-     f using ((strcol(3) eq 'quasi_plastic') ? $1 : NaN):2 with points pt 7 ps 0.4 lc rgb '#ff7f0e' title 'quasi-plastic: collisions until the collapse limit (depends on tol)'
+plot f using ((strcol('status') eq 'normal') ? column('e') : NaN):(column('collisions')) with steps lw 2 lc rgb '#1f77b4' title 'n(e), run ends (finite)', \
+     f using ((strcol('status') eq 'quasi_plastic') ? column('e') : NaN):(column('collisions')) with points pt 7 ps 0.4 lc rgb '#ff7f0e' title 'quasi-plastic: collisions until the collapse limit (depends on tol)'

@@ -3,8 +3,10 @@
 if (term eq 'png') { set terminal pngcairo size 1000,600 font ',11' } else { set terminal svg size 1000,600 dynamic font ',11' }
 set output out
 set datafile separator tab
+set datafile columnheaders
 f = dir.'/b2_velocities.tsv'
-ecrit = real(system("awk -F'\t' '$1==\"b1.e_crit\"{print $2}' ".dir."/b1_answers.tsv"))
+stats dir.'/b1_answers.tsv' using (strcol('key') eq 'b1.e_crit' ? column('value') : NaN) nooutput
+ecrit = STATS_max
 set title "C12 task b2: final velocities against the restitution coefficient (v_0 = 1)"
 set xlabel "restitution coefficient e"
 set ylabel "final velocity [v_0]"
@@ -14,8 +16,8 @@ set grid
 set key top left box opaque
 set arrow from ecrit, graph 0 to ecrit, graph 1 nohead dt 2 lc rgb '#d62728'
 set label "e_{crit}: quasi-plastic below" at ecrit, graph 0.6 offset 1,0 tc rgb '#d62728'
-plot f using 1:4 with lines lw 2 lc rgb '#1f77b4' title 'v_1', \
-     f using 1:5 with lines lw 2 lc rgb '#ff7f0e' title 'v_2', \
-     f using 1:6 with lines lw 2 lc rgb '#2ca02c' title 'v_3', \
-     f using 1:7 with lines lw 2 lc rgb '#9467bd' title 'v_4', \
-     f using 1:((strcol(9) eq '-') ? NaN : $9) every 20 with points pt 6 ps 1.2 lc rgb '#000000' title 'closed form v_4 = ((1+e)/2)^3 (sphere 4 hit once)'
+plot f using (column('e')):(column('v1[V]')) with lines lw 2 lc rgb '#1f77b4' title 'v_1', \
+     f using (column('e')):(column('v2[V]')) with lines lw 2 lc rgb '#ff7f0e' title 'v_2', \
+     f using (column('e')):(column('v3[V]')) with lines lw 2 lc rgb '#2ca02c' title 'v_3', \
+     f using (column('e')):(column('v4[V]')) with lines lw 2 lc rgb '#9467bd' title 'v_4', \
+     f using (column('e')):((strcol('v4_single_hit[V]') eq '-') ? NaN : column('v4_single_hit[V]')) every 20 with points pt 6 ps 1.2 lc rgb '#000000' title 'closed form v_4 = ((1+e)/2)^3 (sphere 4 hit once)'

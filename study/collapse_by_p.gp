@@ -4,6 +4,7 @@
 if (term eq 'png') { set terminal pngcairo size 1000,600 font ',11' } else { set terminal svg size 1000,600 dynamic font ',11' }
 set output out
 set datafile separator tab
+set datafile columnheaders
 f = dir.'/collapse_by_p.tsv'
 set title "Collapse in general rows: random rows that end with an answer, closed-form collapse limits"
 set xlabel "number of spheres p"

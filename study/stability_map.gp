@@ -19,11 +19,12 @@ if (!exists("out")) out = dir."/methods_stability"
 file = dir."/methods_stability.tsv"
 
 set datafile separator "\t"
+set datafile columnheaders
 
-# columns of methods_stability.tsv
-c_row = 1; c_label = 2; c_e = 3; c_dist = 4; c_code = 5
+# columns of methods_stability.tsv, by their header names
+c_row = "row"; c_label = "label"; c_dist = "e_minus_ec[1]"; c_code = "category_code"
 
-stats file skip 1 using c_row nooutput
+stats file using (column(c_row)) nooutput
 n_rows = int(STATS_max)
 
 # outcome categories (sphere_row_outcome): colour per code
@@ -62,8 +63,8 @@ do for [fmt in "pngcairo svg"] {
     set arrow 1 from e_definition - e_c, graph 0 to e_definition - e_c, graph 1 nohead \
         lc rgb "#555555" dt 2
     set label 1 "e = 0.2" at e_definition - e_c, graph 1.02 center font ",9"
-    plot file skip 1 every ::0::(n_rows - 1) using (NaN):c_row:ytic(c_label), \
-         file skip 1 using (column(c_dist) > 0 ? column(c_dist) : NaN):c_row:\
+    plot file every ::0::(n_rows - 1) using (NaN):(column(c_row)):ytic(strcol(c_label)), \
+         file using (column(c_dist) > 0 ? column(c_dist) : NaN):(column(c_row)):\
            (color(column(c_code))) with points pt 5 ps 0.55 lc rgb variable
     unset arrow 1
     unset label 1
@@ -75,7 +76,7 @@ do for [fmt in "pngcairo svg"] {
     set xtics 1e-7, 100
     set xlabel "e_c - e   (e < e_c)"
     set format y ""
-    plot file skip 1 using (column(c_dist) < 0 ? -column(c_dist) : NaN):c_row:\
+    plot file using (column(c_dist) < 0 ? -column(c_dist) : NaN):(column(c_row)):\
            (color(column(c_code))) with points pt 5 ps 0.55 lc rgb variable
 
     # legend along the bottom

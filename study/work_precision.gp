@@ -16,12 +16,14 @@ file = dir."/methods_work_precision.tsv"
 
 set datafile separator "\t"
 set datafile missing "nan"
+set datafile columnheaders
 
-# columns of methods_work_precision.tsv
-c_scene = 1; c_e = 2; c_dist = 3; c_label = 4; c_method = 5; c_kind = 6
-c_cpu = 8; c_error = 18; c_category = 22
+# columns of methods_work_precision.tsv, by their header names
+c_scene = "scene"; c_e = "e[1]"; c_dist = "e_minus_ec[1]"; c_label = "label"
+c_method = "method"; c_kind = "kind"; c_cpu = "cpu_per_run[s]"; c_error = "error[1]"
+c_category = "category"
 
-stats file skip 1 using c_scene nooutput
+stats file using (column(c_scene)) nooutput
 n_scenes = int(STATS_max)
 
 floor_error = 1e-34
@@ -67,24 +69,24 @@ do for [fmt in "pngcairo svg"] {
     set multiplot layout 2,3 title "ARGESIM C12 methods: work-precision of four methods " . \
         "against the real128 reference (p = 4, d = a = v_0 = 1)" font ",15"
     do for [i=1:n_scenes] {
-        stats file skip 1 using (column(c_scene) == i ? column(c_e) : NaN) nooutput
+        stats file using (column(c_scene) == i ? column(c_e) : NaN) nooutput
         e_i = STATS_min
-        stats file skip 1 using (column(c_scene) == i ? column(c_dist) : NaN) nooutput
+        stats file using (column(c_scene) == i ? column(c_dist) : NaN) nooutput
         set title sprintf("e = %.6g   (e - e_c = %.2g)", e_i, STATS_min)
         plot \
-          file skip 1 using (ended(i) && @is_engine ? err(column(c_error)) : NaN):c_cpu:\
+          file using (ended(i) && @is_engine ? err(column(c_error)) : NaN):(column(c_cpu)):\
             (symbol(7, 6)) with linespoints ls 1 pt variable, \
-          file skip 1 using (ended(i) && @is_engine ? err(column(c_error)) : NaN):c_cpu:\
-            c_kind with labels offset 0,1.1 font ",9" tc rgb "#1b9e77", \
-          file skip 1 using (ended(i) && @is_engine_tol ? err(column(c_error)) : NaN):c_cpu:\
+          file using (ended(i) && @is_engine ? err(column(c_error)) : NaN):(column(c_cpu)):\
+            (strcol(c_kind)) with labels offset 0,1.1 font ",9" tc rgb "#1b9e77", \
+          file using (ended(i) && @is_engine_tol ? err(column(c_error)) : NaN):(column(c_cpu)):\
             (symbol(9, 8)) with points ls 2 pt variable, \
-          file skip 1 using (ended(i) && @is_absolute ? err(column(c_error)) : NaN):c_cpu:\
+          file using (ended(i) && @is_absolute ? err(column(c_error)) : NaN):(column(c_cpu)):\
             (symbol(5, 4)) with linespoints ls 3 pt variable, \
-          file skip 1 using (ended(i) && @is_rk8pd ? err(column(c_error)) : NaN):c_cpu:\
+          file using (ended(i) && @is_rk8pd ? err(column(c_error)) : NaN):(column(c_cpu)):\
             (symbol(13, 12)) with linespoints ls 4 pt variable, \
-          file skip 1 using (ended(i) && @is_rkf45 ? err(column(c_error)) : NaN):c_cpu:\
+          file using (ended(i) && @is_rkf45 ? err(column(c_error)) : NaN):(column(c_cpu)):\
             (symbol(11, 10)) with linespoints ls 5 pt variable, \
-          file skip 1 using (ended(i) && @is_stepping ? err(column(c_error)) : NaN):c_cpu:\
+          file using (ended(i) && @is_stepping ? err(column(c_error)) : NaN):(column(c_cpu)):\
             (symbol(15, 14)) with linespoints ls 6 pt variable
     }
     # the last panel holds the legend

@@ -8,8 +8,11 @@
 !> write_scene_files into build/test_front/.
 module test_front
     use sphere_row, only: qp, scene_t, itoa
-    use sphere_row_args, only: cli_t, string_t, add_scene_keys, scene_from_cli, read_real, &
-        read_int, read_reals, is_real_text, is_int_text, printable, short_text
+    use sphere_row_cli, only: cli_t, string_t
+    use sphere_row_scene_keys, only: add_scene_keys, scene_from_cli
+    use sphere_row_read, only: read_real, read_int, read_reals, is_real_text, is_int_text, &
+        printable
+    use sphere_row_format, only: short_text
     use sphere_row_error, only: input_error_t => error_t
     use testsuite, only: error_t, unittest_t, new_unittest, check
     use test_cli, only: program_path
@@ -58,8 +61,15 @@ contains
     !> Every malformed input the front door must refuse.
     function malformed_inputs() result(rows)
         type(bad_case_t), allocatable :: rows(:)
+        rows = [bad_number_syntax(), bad_not_numbers(), bad_beyond_real16(), bad_out_of_range(), &
+            bad_integers(), bad_lists(), bad_keys_twice(), bad_unknown_keys(), &
+            bad_scales(), bad_scene_files()]
+    end function malformed_inputs
+
+    !> Malformed inputs: numbers that list-directed input would take.
+    function bad_number_syntax() result(rows)
+        type(bad_case_t), allocatable :: rows(:)
         rows = [ &
-            ! numbers that list-directed input would take
             bad("e=1-5", 2, "e = 1-5: not a number"), &
             bad("v0=1+2", 2, "v0 = 1+2: not a number"), &
             bad("d=2-3", 2, "d = 2-3: not a number"), &
@@ -69,8 +79,14 @@ contains
             bad("e=1/2", 2, "e = 1/2: not a number"), &
             bad("e=(0.5)", 2, "e = (0.5): not a number"), &
             bad("e=.5.", 2, "e = .5.: not a number"), &
-            bad("e=0.5.1", 2, "e = 0.5.1: not a number"), &
-            ! not numbers at all
+            bad("e=0.5.1", 2, "e = 0.5.1: not a number") &
+            ]
+    end function bad_number_syntax
+
+    !> Malformed inputs: not numbers at all.
+    function bad_not_numbers() result(rows)
+        type(bad_case_t), allocatable :: rows(:)
+        rows = [ &
             bad("e=abc", 2, "e = abc: not a number"), &
             bad("e=nan", 2, "e = nan: not a number"), &
             bad("e=NaN", 2, "e = NaN: not a number"), &
@@ -90,14 +106,26 @@ contains
             bad("e=\s0.5", 2, "e =  0.5: not a number"), &
             bad("e=0.5\n1", 2, "e = 0.5\n1: not a number"), &
             bad("e=0.5\t", 2, "e = 0.5\t: not a number"), &
-            bad("e="//repeat("7x", 600), 2, "e = "//repeat("7x", 600)//": not a number"), &
-            ! numbers real(16) cannot hold
+            bad("e="//repeat("7x", 600), 2, "e = "//repeat("7x", 600)//": not a number") &
+            ]
+    end function bad_not_numbers
+
+    !> Malformed inputs: numbers real(16) cannot hold.
+    function bad_beyond_real16() result(rows)
+        type(bad_case_t), allocatable :: rows(:)
+        rows = [ &
             bad("v0=1e5000", 2, "v0 = 1e5000: beyond the largest real(16)"), &
             bad("v0=-1e5000", 2, "v0 = -1e5000: beyond the largest real(16)"), &
             bad("d=1d5000", 2, "d = 1d5000: beyond the largest real(16)"), &
             bad("tol=1e-5000", 2, "tol = 1e-5000: too small for real(16)"), &
-            bad("v0=1e-99999", 2, "v0 = 1e-99999: too small for real(16)"), &
-            ! out of range
+            bad("v0=1e-99999", 2, "v0 = 1e-99999: too small for real(16)") &
+            ]
+    end function bad_beyond_real16
+
+    !> Malformed inputs: out of range.
+    function bad_out_of_range() result(rows)
+        type(bad_case_t), allocatable :: rows(:)
+        rows = [ &
             bad("e=1.5", 2, "e = 1.5: allowed 0 <= e <= 1"), &
             bad("e=-0.1", 2, "e = -0.1: allowed 0 <= e <= 1"), &
             bad("v0=0", 2, "v0 = 0: allowed v0 > 0"), &
@@ -105,8 +133,14 @@ contains
             bad("d=-1", 2, "d = -1: allowed d >= 0"), &
             bad("a=-1", 2, "a = -1: allowed a >= 0"), &
             bad("tol=1", 2, "tol = 1: allowed 0 <= tol < 1"), &
-            bad("tol=-1e-3", 2, "tol = -1e-3: allowed 0 <= tol < 1"), &
-            ! integers
+            bad("tol=-1e-3", 2, "tol = -1e-3: allowed 0 <= tol < 1") &
+            ]
+    end function bad_out_of_range
+
+    !> Malformed inputs: integers.
+    function bad_integers() result(rows)
+        type(bad_case_t), allocatable :: rows(:)
+        rows = [ &
             bad("p=1", 2, "p = 1: allowed an integer 2 <= p <= 1000000"), &
             bad("p=2.5", 2, "p = 2.5: not an integer"), &
             bad("p=4e0", 2, "p = 4e0: not an integer"), &
@@ -116,8 +150,14 @@ contains
             bad("p=1000001", 2, "p = 1000001: allowed an integer 2 <= p <= 1000000"), &
             bad("max_collisions=0", 2, "max_collisions = 0: allowed an integer"), &
             bad("max_collisions=1.5", 2, "max_collisions = 1.5: not an integer"), &
-            bad("max_collisions=-5", 2, "max_collisions = -5: allowed"), &
-            ! lists
+            bad("max_collisions=-5", 2, "max_collisions = -5: allowed") &
+            ]
+    end function bad_integers
+
+    !> Malformed inputs: lists.
+    function bad_lists() result(rows)
+        type(bad_case_t), allocatable :: rows(:)
+        rows = [ &
             bad("masses=1,1,1", 2, "masses = 1,1,1: 3 values given; allowed exactly p = 4"), &
             bad("masses=1,0,1,1", 2, "masses = 1,0,1,1: value 2 is 0; allowed"), &
             bad("masses=1,x,1,1", 2, "masses = 1,x,1,1: value 2 = x: not a number"), &
@@ -130,15 +170,27 @@ contains
             bad("gaps=1,1", 2, "gaps = 1,1: 2 values given; allowed exactly p-1 = 3"), &
             bad("gaps=1,-1,1", 2, "gaps = 1,-1,1: value 2 is -1; allowed"), &
             bad("gaps=1,nan,1", 2, "gaps = 1,nan,1: value 2 = nan: not a number"), &
-            bad("p=3 gaps=1,1,1", 2, "gaps = 1,1,1: 3 values given; allowed exactly p-1 = 2"), &
-            ! keys given twice, or with the key that overrides them
+            bad("p=3 gaps=1,1,1", 2, "gaps = 1,1,1: 3 values given; allowed exactly p-1 = 2") &
+            ]
+    end function bad_lists
+
+    !> Malformed inputs: keys given twice, or with the key that overrides them.
+    function bad_keys_twice() result(rows)
+        type(bad_case_t), allocatable :: rows(:)
+        rows = [ &
             bad("e=0.5 e=0.6", 2, "e = 0.6: e is given twice (first e = 0.5)"), &
             bad("p=4 p=4", 2, "p = 4: p is given twice"), &
             bad("events=yes events=no", 2, "events = no: events is given twice"), &
             bad("gaps=1,1,1 a=-1", 2, "a = -1"), &
             bad("gaps=1,1,1 a=1", 2, "a = 1: gaps = 1,1,1 is given too"), &
-            bad("a=1 gaps=1,1,1", 2, "a = 1: gaps = 1,1,1 is given too"), &
-            ! unknown keys and stray arguments
+            bad("a=1 gaps=1,1,1", 2, "a = 1: gaps = 1,1,1 is given too") &
+            ]
+    end function bad_keys_twice
+
+    !> Malformed inputs: unknown keys and stray arguments.
+    function bad_unknown_keys() result(rows)
+        type(bad_case_t), allocatable :: rows(:)
+        rows = [ &
             bad("foo=1", 2, "foo = 1: unknown key; allowed keys: p, e,"), &
             bad("E=0.5", 2, "E = 0.5: unknown key"), &
             bad("\se=0.5", 2, " e = 0.5: unknown key"), &
@@ -148,8 +200,14 @@ contains
             bad("\e", 2, "argument '': allowed key=value"), &
             bad("events=maybe", 2, "events = maybe: allowed yes or no"), &
             bad("events=Yes", 2, "events = Yes: allowed yes or no"), &
-            bad("events=", 2, "events = : allowed yes or no"), &
-            ! scenes whose scales real(16) cannot hold
+            bad("events=", 2, "events = : allowed yes or no") &
+            ]
+    end function bad_unknown_keys
+
+    !> Malformed inputs: scenes whose scales real(16) cannot hold.
+    function bad_scales() result(rows)
+        type(bad_case_t), allocatable :: rows(:)
+        rows = [ &
             bad("d=1e4932", 2, "d = 1e4932: the row's length"), &
             bad("a=1e4932", 2, "a = 1e4932: the row's length"), &
             bad("gaps=1e4932,1e4932,1", 2, "gaps = 1e4932,1e4932,1: the row's length"), &
@@ -157,8 +215,14 @@ contains
             bad("v0=1e4932", 2, "v0 = 1e4932: the velocity scale"), &
             bad("masses=1e-4000,1e4000,1,1", 2, "masses = 1e-4000,1e4000,1,1: sum(masses)"), &
             bad("gaps=1e4931,1e4931,1e4931", 2, "gaps = 1e4931,1e4931,1e4931: the positions'"), &
-            bad("masses=1e-2000,1,1,1 gaps=1e2933,1,1", 2, "masses = 1e-2000,1,1,1: the pos"), &
-            ! scene files
+            bad("masses=1e-2000,1,1,1 gaps=1e2933,1,1", 2, "masses = 1e-2000,1,1,1: the pos") &
+            ]
+    end function bad_scales
+
+    !> Malformed inputs: scene files.
+    function bad_scene_files() result(rows)
+        type(bad_case_t), allocatable :: rows(:)
+        rows = [ &
             bad("no_such_file.nml", 2, "file = no_such_file.nml: cannot be opened"), &
             bad("F/good.nml F/good.nml", 2, "a second scene file"), &
             bad("F/element.nml", 2, "element.nml': masses(4) = 2: not a key name"), &
@@ -179,7 +243,7 @@ contains
             bad("F/scale.nml", 2, "scale.nml': d = 1e4932: the row's length"), &
             bad("F", 2, "test_front': empty (or not a file)") &
             ]
-    end function malformed_inputs
+    end function bad_scene_files
 
     !> The scene files the table names.
     subroutine write_scene_files()

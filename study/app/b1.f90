@@ -6,7 +6,8 @@ program c12_b1
         status_normal, status_collapsed, itoa
     use sphere_row_tables, only: open_table, write_answer, answer_header, tab
     use sphere_row_analysis, only: sequence_of, sequence_text, sequence_hash, tail_period, &
-        critical_restitution, bisect_changes
+        critical_restitution
+    use sphere_row_bisection, only: bisect, bisect_changes
     use sphere_row_study_cli, only: cli_t, add_scene_keys, start_program, read_keys, &
         stop_unless_normal
     use sphere_row_sorting, only: sort
@@ -14,6 +15,9 @@ program c12_b1
     character(len=*), parameter :: nl = new_line("a")
     !> Class of a run with a collapse: its count depends on tol, not on e alone.
     integer(8), parameter :: collapsed_class = 0_8
+    !> Smallest n of a point in the power-law fit: below it the run is too far
+    !> from e_crit for the asymptote n ~ (e - e_crit)^(-1/2).
+    integer, parameter :: min_fit_collisions = 200
     type(cli_t) :: cli
     character(len=:), allocatable :: out
     character(len=300) :: msg
@@ -21,8 +25,8 @@ program c12_b1
     type(run_t) :: run
     type(event_log_t) :: events
     integer, allocatable :: pairs(:), cycle(:)
-    integer :: stat, unit, j, n_scan, n_bisect_max, n_delta, n_boundaries, period, k
-    integer :: n_intervals, n_fit, iterations, stat_c
+    integer :: stat, unit, j, n_scan, n_bisect_max, n_boundaries, period, k
+    integer :: n_intervals, n_fit, stat_c
     real(qp) :: resolution, tol_fine, e_lo, e_hi, e_c, e_c_sim, closed, lo, hi, mid
     real(qp) :: sx, sy, sxx, sxy, slope, intercept, e_quasi, delta
     real(qp), allocatable :: e_scan(:), boundaries(:)
@@ -30,18 +34,7 @@ program c12_b1
     integer(8), allocatable :: class_scan(:)
     integer(8) :: class_mid
 
-    call start_program(cli, "c12-b1", &
-        "C12 task b1: n(e) from e = 1 down to 0, its intervals of constant n and"//nl// &
-        "collision sequence, and the critical restitution of inelastic collapse."//nl// &
-        "Writes OUT/b1_scan.tsv, b1_intervals.tsv, b1_critical.tsv, b1_answers.tsv.")
-    call cli%add_int("n_scan", "2001", "points of the scan of e in [0, 1]", lo=3)
-    call cli%add_real("resolution", "1e-12", "width to which each change of n is bisected", &
-        lo=1.0e-30_qp, hi=0.1_qp)
-    call cli%add_int("n_bisect_max", "300", "changes with larger n on both sides are not " &
-        //"bisected", lo=1)
-    call cli%add_real("tol_fine", "1e-4000", "tolerance of the runs near e_crit", &
-        lo=1.0e-4900_qp, hi=0.5_qp)
-    call add_scene_keys(cli, e_set_by="the scan of e")
+    call define_keys()
     call read_keys(cli, scene)
     out = cli%get_word("out")
     n_scan = cli%get_int("n_scan")
@@ -49,113 +42,156 @@ program c12_b1
     n_bisect_max = cli%get_int("n_bisect_max")
     tol_fine = cli%get_real("tol_fine")
 
-    ! 1. dense scan of e from 1 down to 0 with the scene's own tolerance
-    allocate (e_scan(n_scan), n_scan_runs(n_scan), status_scan(n_scan), class_scan(n_scan))
-    do j = 1, n_scan
-        e_scan(j) = 1.0_qp - real(j - 1, qp)/real(n_scan - 1, qp)
-        call classify(e_scan(j), class_scan(j))
-        n_scan_runs(j) = run%n
-        status_scan(j) = run%status
-    end do
-
-    ! 2. every change of (n, sequence) between neighbours, bisected to `resolution`
-    allocate (boundaries(0))
-    do j = 1, n_scan - 1
-        if (class_scan(j) == class_scan(j + 1)) cycle
-        if (min(n_scan_runs(j), n_scan_runs(j + 1)) > n_bisect_max) cycle
-        call bisect_changes(class_of, e_scan(j + 1), e_scan(j), class_scan(j + 1), &
-            class_scan(j), resolution, boundaries)
-    end do
-    n_boundaries = size(boundaries)
-    call sort(boundaries)
-
+    call scan()
+    call find_changes()
     call write_scan()
-
     call write_intervals()
-
-    ! 3. the critical restitution by simulation alone, with a tolerance near
-    !    the bottom of real128's range: bisect finite against collapsed
-    scene%tol = tol_fine
-    lo = e_quasi - 0.01_qp
-    hi = e_quasi + 0.01_qp
-    iterations = 0
-    do while (hi - lo > resolution .and. iterations < 200)
-        mid = 0.5_qp*(lo + hi)
-        scene%e = mid
-        call simulate(scene, run)
-        if (run%status == status_collapsed) then
-            lo = mid
-        else
-            hi = mid
-        end if
-        iterations = iterations + 1
-    end do
-    e_c_sim = hi
-
-    ! 4. the critical restitution from the cycle of the collapse: a run with
-    !    the fine tolerance just below the simulated boundary follows the cycle
-    !    for thousands of collisions; find its period inside the run and bisect
-    !    where the cycle's rate map gets complex eigenvalues
-    !    (its limit is taken by the fallback alone, not as soon as the cycle is
-    !    certified: the run is wanted for its long tail of the cycle)
-    e_lo = e_c_sim - 0.001_qp
-    scene%e = e_lo
-    scene%closed_form_limits = .false.
-    call simulate(scene, run, events)
-    scene%closed_form_limits = .true.
-    call sequence_of(events, pairs, before_collapse=.true.)
-    pairs = pairs(:3*size(pairs)/4)
-    period = tail_period(pairs, 48, 24)
-    e_c = -1.0_qp
-    stat_c = -1
-    if (period > 0) then
-        cycle = pairs(size(pairs) - period + 1:)
-        e_hi = e_c_sim + 0.01_qp
-        call critical_restitution(scene%m, cycle, e_lo, e_hi, e_c, stat_c)
-    end if
-    if (stat_c /= status_normal) e_c = -1.0_qp
-    closed = 3.0_qp - 2.0_qp*sqrt(2.0_qp)
-
-    ! 5. n against the distance to e_c, with the fine tolerance
-    n_delta = 25
-    call open_table(out, "b1_critical.tsv", "delta=e-e_crit"//tab//"e"//tab//"collisions" &
-        //tab//"status"//tab//"collisions*sqrt(delta)", unit, stat, msg)
-    call stop_unless_normal(stat, msg)
-    sx = 0
-    sy = 0
-    sxx = 0
-    sxy = 0
-    n_fit = 0
-    do k = 1, n_delta
-        delta = 10.0_qp**(-1.0_qp - 6.0_qp*real(k - 1, qp)/real(n_delta - 1, qp))
-        if (e_c > 0) then
-            scene%e = e_c + delta
-        else
-            scene%e = e_c_sim + delta
-        end if
-        call simulate(scene, run)
-        write (unit, "(a)") str(delta)//tab//str(scene%e)//tab//itoa(run%n)//tab// &
-            status_word(run%status)//tab//str(run%n*sqrt(delta))
-        ! fit log n = intercept + slope log delta where the asymptote holds (n >= 200)
-        if (run%status == status_normal .and. run%n >= 200) then
-            sx = sx + log(delta)
-            sy = sy + log(real(run%n, qp))
-            sxx = sxx + log(delta)**2
-            sxy = sxy + log(delta)*log(real(run%n, qp))
-            n_fit = n_fit + 1
-        end if
-    end do
-    close (unit)
-    slope = 0
-    intercept = 0
-    if (n_fit >= 2) then
-        slope = (n_fit*sxy - sx*sy)/(n_fit*sxx - sx**2)
-        intercept = (sy - slope*sx)/n_fit
-    end if
-
+    call critical_by_simulation()
+    call critical_from_cycle()
+    call write_critical()
     call write_answers()
 
 contains
+
+    !> The keys of c12-b1.
+    subroutine define_keys()
+        call start_program(cli, "c12-b1", &
+            "C12 task b1: n(e) from e = 1 down to 0, its intervals of constant n and"//nl// &
+            "collision sequence, and the critical restitution of inelastic collapse."//nl// &
+            "Writes OUT/b1_scan.tsv, b1_intervals.tsv, b1_critical.tsv, b1_answers.tsv.")
+        call cli%add_int("n_scan", "2001", "points of the scan of e in [0, 1]", lo=3)
+        call cli%add_real("resolution", "1e-12", &
+            "width to which each change of n is bisected", lo=1.0e-30_qp, hi=0.1_qp)
+        call cli%add_int("n_bisect_max", "300", "changes with larger n on both sides are " &
+            //"not bisected", lo=1)
+        call cli%add_real("tol_fine", "1e-4000", "tolerance of the runs near e_crit", &
+            lo=1.0e-4900_qp, hi=0.5_qp)
+        call add_scene_keys(cli, e_set_by="the scan of e")
+    end subroutine define_keys
+
+    !> Step 1: a dense scan of e from 1 down to 0 with the scene's own tolerance.
+    subroutine scan()
+        allocate (e_scan(n_scan), n_scan_runs(n_scan), status_scan(n_scan), class_scan(n_scan))
+        do j = 1, n_scan
+            e_scan(j) = 1.0_qp - real(j - 1, qp)/real(n_scan - 1, qp)
+            call classify(e_scan(j), class_scan(j))
+            n_scan_runs(j) = run%n
+            status_scan(j) = run%status
+        end do
+    end subroutine scan
+
+    !> Step 2: every change of (n, sequence) between neighbours of the scan,
+    !> bisected to `resolution`, in increasing order.
+    subroutine find_changes()
+        allocate (boundaries(0))
+        do j = 1, n_scan - 1
+            if (class_scan(j) == class_scan(j + 1)) cycle
+            if (min(n_scan_runs(j), n_scan_runs(j + 1)) > n_bisect_max) cycle
+            call bisect_changes(class_of, e_scan(j + 1), e_scan(j), class_scan(j + 1), &
+                class_scan(j), resolution, boundaries)
+        end do
+        n_boundaries = size(boundaries)
+        call sort(boundaries)
+    end subroutine find_changes
+
+    !> Step 3: the critical restitution by simulation alone, with a tolerance
+    !> near the bottom of real128's range: bisect finite against collapsed.
+    subroutine critical_by_simulation()
+        !> Half-width of the bracket around e_quasi in which the simulation alone
+        !> bisects collapsed against finite runs.
+        real(qp), parameter :: simulation_bracket = 0.01_qp
+        !> Most bisection steps of that bracket.
+        integer, parameter :: max_bisection_steps = 200
+        scene%tol = tol_fine
+        lo = e_quasi - simulation_bracket
+        hi = e_quasi + simulation_bracket
+        call bisect(collapses, lo, hi, resolution, max_bisection_steps)
+        e_c_sim = hi
+    end subroutine critical_by_simulation
+
+    !> Step 4: the critical restitution from the cycle of the collapse. A run
+    !> with the fine tolerance just below the simulated boundary follows the
+    !> cycle for thousands of collisions; its period is found inside the run,
+    !> and e_c is where the cycle's rate map gets complex eigenvalues. The
+    !> run's limit is taken by the fallback alone, not as soon as the cycle is
+    !> certified: it is wanted for its long tail of the cycle.
+    subroutine critical_from_cycle()
+        !> How far below the simulated bound the run that shows the collapse cycle
+        !> starts: a collapsed run, yet close enough to e_crit to follow the cycle
+        !> for thousands of collisions.
+        real(qp), parameter :: cycle_run_offset = 0.001_qp
+        !> Part of the cycle run's collisions searched for the period: the end of
+        !> the run, where the fallback takes the limit, is left out.
+        integer, parameter :: cycle_part_num = 3, cycle_part_den = 4
+        !> Collisions at the end of that part that must repeat with the period.
+        integer, parameter :: period_window = 48
+        !> Longest period looked for.
+        integer, parameter :: max_period = 24
+        !> How far above the simulated bound the discriminant of the cycle's rate
+        !> map is bracketed.
+        real(qp), parameter :: discriminant_bracket = 0.01_qp
+        e_lo = e_c_sim - cycle_run_offset
+        scene%e = e_lo
+        scene%closed_form_limits = .false.
+        call simulate(scene, run, events)
+        scene%closed_form_limits = .true.
+        call sequence_of(events, pairs, before_collapse=.true.)
+        pairs = pairs(:cycle_part_num*size(pairs)/cycle_part_den)
+        period = tail_period(pairs, period_window, max_period)
+        e_c = -1.0_qp
+        stat_c = -1
+        if (period > 0) then
+            cycle = pairs(size(pairs) - period + 1:)
+            e_hi = e_c_sim + discriminant_bracket
+            call critical_restitution(scene%m, cycle, e_lo, e_hi, e_c, stat_c)
+        end if
+        if (stat_c /= status_normal) e_c = -1.0_qp
+        closed = 3.0_qp - 2.0_qp*sqrt(2.0_qp)
+    end subroutine critical_from_cycle
+
+    !> Step 5, b1_critical.tsv: n against the distance to e_c with the fine
+    !> tolerance, and the power law fitted to it.
+    subroutine write_critical()
+        !> Rows of b1_critical.tsv: e - e_crit log-spaced over the decades below.
+        integer, parameter :: n_delta = 25
+        !> Largest and smallest e - e_crit of b1_critical.tsv, as powers of ten.
+        real(qp), parameter :: delta_top_decade = -1.0_qp, delta_bottom_decade = -7.0_qp
+        call open_table(out, "b1_critical.tsv", "delta=e-e_crit"//tab//"e"//tab// &
+            "collisions"//tab//"status"//tab//"collisions*sqrt(delta)", unit, stat, msg)
+        call stop_unless_normal(stat, msg)
+        sx = 0
+        sy = 0
+        sxx = 0
+        sxy = 0
+        n_fit = 0
+        do k = 1, n_delta
+            delta = 10.0_qp**(delta_top_decade + (delta_bottom_decade - delta_top_decade) &
+                *real(k - 1, qp)/real(n_delta - 1, qp))
+            if (e_c > 0) then
+                scene%e = e_c + delta
+            else
+                scene%e = e_c_sim + delta
+            end if
+            call simulate(scene, run)
+            write (unit, "(a)") str(delta)//tab//str(scene%e)//tab//itoa(run%n)//tab// &
+                status_word(run%status)//tab//str(run%n*sqrt(delta))
+            ! fit log n = intercept + slope log delta where the asymptote holds
+            if (run%status == status_normal .and. run%n >= min_fit_collisions) then
+                sx = sx + log(delta)
+                sy = sy + log(real(run%n, qp))
+                sxx = sxx + log(delta)**2
+                sxy = sxy + log(delta)*log(real(run%n, qp))
+                n_fit = n_fit + 1
+            end if
+        end do
+        close (unit)
+        slope = 0
+        intercept = 0
+        if (n_fit >= 2) then
+            slope = (n_fit*sxy - sx*sy)/(n_fit*sxx - sx**2)
+            intercept = (sy - slope*sx)/n_fit
+        end if
+    end subroutine write_critical
 
     !> The answers of task b1: the critical restitution from the collapse cycle
     !> and by simulation, against 3 - 2 sqrt(2); the power law of n near it;
@@ -180,9 +216,9 @@ contains
             "velocities below any fixed tolerance, so this bound lies above e_crit")
         call write_answer(unit, "b1.exponent", str(slope), "theory", str(-0.5_qp), &
             str(slope + 0.5_qp), "least-squares slope of log n against log(e - e_crit) over "// &
-            itoa(n_fit)//" points with n >= 200; near e_crit the cycle map has eigenvalues "// &
-            "r exp(+-i theta) with theta ~ sqrt(e - e_crit), and the collisions end after "// &
-            "about pi/theta cycles")
+            itoa(n_fit)//" points with n >= "//itoa(min_fit_collisions)//"; near e_crit the "// &
+            "cycle map has eigenvalues r exp(+-i theta) with theta ~ sqrt(e - e_crit), and "// &
+            "the collisions end after about pi/theta cycles")
         call write_answer(unit, "b1.prefactor", str(exp(intercept)), "-", "-", "-", &
             "n ~ prefactor (e - e_crit)^exponent")
         call write_answer(unit, "b1.e_quasi_plastic", str(e_quasi), "-", "-", "-", &
@@ -191,6 +227,11 @@ contains
             "'quasi-plastic case reached'")
         call write_answer(unit, "b1.scan_points", itoa(n_scan), "-", "-", "-", &
             "e from 1 down to 0 in equal steps")
+        call write_answer(unit, "b1.resolution", str(resolution), "-", "-", "-", &
+            "width to which each change of the scan's collision sequence is bisected")
+        call write_answer(unit, "b1.tol_fine", str(tol_fine), "-", "-", "-", &
+            "tolerance of the runs near e_crit: the simulated bound, the cycle run and "// &
+            "b1_critical.tsv")
         call write_answer(unit, "b1.intervals", itoa(n_intervals), "-", "-", "-", &
             "intervals of constant n and sequence found, each end bisected to "// &
             str(resolution)//" (changes with n > "//itoa(n_bisect_max)//" on both sides are "// &
@@ -259,6 +300,14 @@ contains
         end do
         close (unit)
     end subroutine write_scan
+
+    !> Whether the run at e with the scene's tolerance collapses, for bisect.
+    logical function collapses(e)
+        real(qp), intent(in) :: e
+        scene%e = e
+        call simulate(scene, run)
+        collapses = run%status == status_collapsed
+    end function collapses
 
     !> classify as a function, for bisect_changes.
     function class_of(e) result(class)

@@ -38,72 +38,88 @@ program c12_b2
 
     p = scene%p
     equal = all(scene%m == scene%m(1))
-    header = "e"//tab//"collisions"//tab//"status"
-    do i = 1, p
-        header = header//tab//"v"//itoa(i)//"[V]"
-    end do
-    header = header//tab//"max|v-polynomial|[V]"//tab//"v"//itoa(p)//"_single_hit[V]"
-    call open_table(out, "b2_velocities.tsv", header, unit, stat, msg)
-    call stop_unless_normal(stat, msg)
-    call open_table(out, "b2_closed_forms.tsv", "sequence"//tab//"collisions"//tab// &
-        "e_first_on_grid"//tab//"sphere"//tab// &
-        "coefficients_of_e^0,e^1,...[V]", unit_forms, stat, msg)
-    call stop_unless_normal(stat, msg)
-
-    allocate (seen(0))
-    max_diff = 0
-    max_single = 0
-    n_poly = 0
-    n_single = 0
-    e_single_min = 1
-    contiguous = .true.
-    do j = 1, n_grid
-        e = 1.0_qp - real(j - 1, qp)/real(n_grid - 1, qp)
-        scene%e = e
-        call simulate(scene, run, events)
-        line = str(e)//tab//itoa(run%n)//tab//status_word(run%status)
-        do i = 1, p
-            line = line//tab//str(run%v(i))
-        end do
-        if (run%status == status_normal) then
-            call sequence_of(events, pairs)
-            call sequence_polynomials(scene%m, scene%v0, pairs, coef)
-            diff = 0
-            do i = 1, p
-                diff = max(diff, abs(run%v(i) - poly_eval(coef(:, i), e)))
-            end do
-            max_diff = max(max_diff, diff)
-            n_poly = n_poly + 1
-            line = line//tab//str(diff)
-            ! sphere p is hit once, by sphere p-1, after the impulse ran down the row
-            single_hit = equal .and. count(pairs == p - 1) == 1 .and. size(pairs) >= p - 1
-            if (single_hit) single_hit = all(pairs(:p - 1) == [(i, i=1, p - 1)])
-            if (single_hit) then
-                single = scene%v0*((1 + e)/2)**(p - 1)
-                max_single = max(max_single, abs(run%v(p) - single))
-                n_single = n_single + 1
-                if (contiguous) e_single_min = e
-                line = line//tab//str(single)
-            else
-                contiguous = .false.
-                line = line//tab//"-"
-            end if
-            if (size(pairs) <= max_listed .and. .not. any(seen == sequence_hash(pairs))) then
-                seen = [seen, sequence_hash(pairs)]
-                call list_forms(e)
-            end if
-        else
-            contiguous = .false.
-            line = line//tab//"-"//tab//"-"
-        end if
-        write (unit, "(a)") line
-    end do
-    close (unit)
-    close (unit_forms)
-
+    call open_tables()
+    call tabulate()
     call write_answers()
 
 contains
+
+    !> b2_velocities.tsv and b2_closed_forms.tsv, with their headers.
+    subroutine open_tables()
+        header = "e"//tab//"collisions"//tab//"status"
+        do i = 1, p
+            header = header//tab//"v"//itoa(i)//"[V]"
+        end do
+        header = header//tab//"max|v-polynomial|[V]"//tab//"v"//itoa(p)//"_single_hit[V]"
+        call open_table(out, "b2_velocities.tsv", header, unit, stat, msg)
+        call stop_unless_normal(stat, msg)
+        call open_table(out, "b2_closed_forms.tsv", "sequence"//tab//"collisions"//tab// &
+            "e_first_on_grid"//tab//"sphere"//tab// &
+            "coefficients_of_e^0,e^1,...[V]", unit_forms, stat, msg)
+        call stop_unless_normal(stat, msg)
+    end subroutine open_tables
+
+    !> The grid of e from 1 down to 0: one row of final velocities per point,
+    !> each finite run against the polynomials of its sequence and, where sphere
+    !> p is hit once, against the single-hit closed form.
+    subroutine tabulate()
+        allocate (seen(0))
+        max_diff = 0
+        max_single = 0
+        n_poly = 0
+        n_single = 0
+        e_single_min = 1
+        contiguous = .true.
+        do j = 1, n_grid
+            e = 1.0_qp - real(j - 1, qp)/real(n_grid - 1, qp)
+            scene%e = e
+            call simulate(scene, run, events)
+            line = str(e)//tab//itoa(run%n)//tab//status_word(run%status)
+            do i = 1, p
+                line = line//tab//str(run%v(i))
+            end do
+            if (run%status == status_normal) then
+                call compare_closed_forms()
+            else
+                contiguous = .false.
+                line = line//tab//"-"//tab//"-"
+            end if
+            write (unit, "(a)") line
+        end do
+        close (unit)
+        close (unit_forms)
+    end subroutine tabulate
+
+    !> The finite run at grid point e against the polynomials of its own
+    !> sequence (listed once per sequence) and the single-hit closed form.
+    subroutine compare_closed_forms()
+        call sequence_of(events, pairs)
+        call sequence_polynomials(scene%m, scene%v0, pairs, coef)
+        diff = 0
+        do i = 1, p
+            diff = max(diff, abs(run%v(i) - poly_eval(coef(:, i), e)))
+        end do
+        max_diff = max(max_diff, diff)
+        n_poly = n_poly + 1
+        line = line//tab//str(diff)
+        ! sphere p is hit once, by sphere p-1, after the impulse ran down the row
+        single_hit = equal .and. count(pairs == p - 1) == 1 .and. size(pairs) >= p - 1
+        if (single_hit) single_hit = all(pairs(:p - 1) == [(i, i=1, p - 1)])
+        if (single_hit) then
+            single = scene%v0*((1 + e)/2)**(p - 1)
+            max_single = max(max_single, abs(run%v(p) - single))
+            n_single = n_single + 1
+            if (contiguous) e_single_min = e
+            line = line//tab//str(single)
+        else
+            contiguous = .false.
+            line = line//tab//"-"
+        end if
+        if (size(pairs) <= max_listed .and. .not. any(seen == sequence_hash(pairs))) then
+            seen = [seen, sequence_hash(pairs)]
+            call list_forms(e)
+        end if
+    end subroutine compare_closed_forms
 
     !> The answers of task b2: how far the grid agrees with the closed forms, and
     !> the plastic limit e = 0 against momentum conservation.

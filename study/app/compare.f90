@@ -1,4 +1,5 @@
-!> tsv-compare: check that regenerated study tables agree with the committed ones.
+!> The program tsv-compare checks that regenerated study tables agree with the
+!> committed ones.
 !>
 !> Every `*.tsv` of the fresh directory is compared with the file of the same
 !> name in the committed directory, field by field. Words and integers must be

@@ -1,26 +1,26 @@
-!> c12-methods: the four methods of the comparison compared against the reference
-!> engine (real128) on the definition's scene, written as TSV tables:
+!> The program c12-methods: the four methods of the comparison compared against
+!> the reference engine (real128) on the definition's scene, written as TSV tables:
 !> work-precision, stability over e, smallest distance to e_c per precision,
 !> costs per collision, and the platform the times were taken on.
 program c12_methods
     use, intrinsic :: iso_fortran_env, only: output_unit, int64, &
         compiler_version, compiler_options
+    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
     use sphere_row, only: dp, qp, scene_t, scene_init, status_normal, status_word, str, itoa
-    use sphere_row_tables, only: cpu_model
+    use sphere_row_tables, only: cpu_model, tab
     use sphere_row_outcome, only: outcome_t, comparison_t, compare_outcomes, classify, &
         category_word
     use sphere_row_methods, only: method_t, new_method, reference_method, method_prepare, &
         method_run, method_name, method_label, method_setting, method_v_tol, kind_name, &
         method_engine, method_absolute, method_ode, method_stepping, stepper_rk8pd, &
-        stepper_rkf45
-    use sphere_row_kind_engines, only: built_kinds, kind_info, kind_info_t
+        stepper_rkf45, engine_methods, method_time
+    use sphere_row_kind_engines, only: kind_info, kind_info_t
     use sphere_row_study_cli, only: cli_t, start_program, read_keys, fail, stop_unless_normal
-    use sphere_row_sorting, only: median
+    use sphere_row_bisection, only: bisect
     implicit none
 
     character(len=*), parameter :: name = "c12-methods"
     character(len=*), parameter :: nl = new_line("a")
-    character(len=*), parameter :: tab = achar(9)
     !> The critical restitution of the definition's scene, 3 - 2 sqrt(2).
     real(qp), parameter :: e_crit = 3.0_qp - 2.0_qp*sqrt(2.0_qp)
     !> Closest distance to e_c of the stability map: the reference's count is
@@ -36,12 +36,12 @@ program c12_methods
     character(len=300) :: msg
     type(method_t), allocatable :: methods(:)
     logical, allocatable :: in_map(:)
-    real(qp), allocatable :: scenes(:)
-    logical, allocatable :: in_costs(:)
     integer :: repeats, points, stat
     integer(int64) :: max_steps
     real(qp) :: min_time
     real :: clock_start, clock_end
+    !> The method under test in min_distance's bisection.
+    type(method_t) :: tested
 
     call cpu_time(clock_start)
     call define_keys()
@@ -55,9 +55,6 @@ program c12_methods
     if (stat /= 0) call fail("out = "//out_dir//": the directory cannot be created")
 
     call method_list()
-    ! The work-precision scenes; the costs table takes e = 0.2 and e = 0.172.
-    scenes = [0.2_qp, e_crit + 1.0e-2_qp, e_crit + 1.0e-3_qp, 0.172_qp, e_crit + 1.0e-4_qp]
-    in_costs = [.true., .false., .false., .true., .false.]
     call work_precision()
     call lap("work-precision and costs")
     call stability()
@@ -101,27 +98,41 @@ contains
             1.0e-11_qp, 1.0e-13_qp]
         real(qp), parameter :: rkf45_tols(3) = [1.0e-4_qp, 1.0e-8_qp, 1.0e-12_qp]
         real(qp), parameter :: steps(5) = [1.0e-1_qp, 1.0e-2_qp, 1.0e-3_qp, 1.0e-4_qp, 1.0e-5_qp]
-        methods = [engines_of_each_kind(), &
-            new_method(method_engine, dp, tol=sqrt_tiny(dp)), &
+        !> The smallest time step on the map.
+        real(qp), parameter :: finest_mapped_step = 1.0e-4_qp
+        !> The one rkf45 tolerance on the map (1e-8).
+        integer, parameter :: mapped_rkf45 = 2
+        type(kind_info_t) :: real64
+        real64 = kind_info(dp)
+        methods = [engine_methods(tiny_tol=.false.), &
+            new_method(method_engine, dp, tol=real64%sqrt_tiny), &
             new_method(method_absolute, dp), new_method(method_absolute, qp)]
         in_map = [(.true., k=1, size(methods))]
         do k = 1, size(ode_tols)
             methods = [methods, new_method(method_ode, tol=ode_tols(k), stepper=stepper_rk8pd)]
-            in_map = [in_map, mod(k, 2) == 1]
+            in_map = [in_map, mod(k, 2) == 1]  ! 1e-3, 1e-7, 1e-11
         end do
         do k = 1, size(rkf45_tols)
             methods = [methods, new_method(method_ode, tol=rkf45_tols(k), stepper=stepper_rkf45)]
-            in_map = [in_map, k == 2]
+            in_map = [in_map, k == mapped_rkf45]
         end do
         do k = 1, size(steps)
             methods = [methods, new_method(method_stepping, h=steps(k), max_steps=max_steps)]
-            in_map = [in_map, steps(k) >= 1.0e-4_qp]
+            in_map = [in_map, steps(k) >= finest_mapped_step]
         end do
     end subroutine method_list
 
     !> methods_work_precision.tsv and methods_costs.tsv: every method on each
     !> scene, timed, against the reference.
     subroutine work_precision()
+        !> The scenes: a finite run (e = 0.2), three above e_c by a decade each,
+        !> and e = 0.172 just above e_c.
+        real(qp), parameter :: scenes(*) = [0.2_qp, e_crit + 1.0e-2_qp, e_crit + 1.0e-3_qp, &
+            0.172_qp, e_crit + 1.0e-4_qp]
+        !> The scenes of the costs table: e = 0.2 and e = 0.172.
+        logical, parameter :: in_costs(*) = [.true., .false., .false., .true., .false.]
+        !> Nanoseconds in a second.
+        real(qp), parameter :: ns_per_s = 1.0e9_qp
         type(outcome_t) :: ref, run
         type(comparison_t) :: cmp
         type(scene_t) :: scene
@@ -151,7 +162,8 @@ contains
                 ! times in units of L/v0 (L = max(d, a) = 1 here).
                 err = max(cmp%v_error/scene%v0, &
                     cmp%t_error*scene%v0/max(scene%d, maxval(scene%a)))
-                call time_runs(methods(m), seconds, batches, runs)
+                call method_time(methods(m), min_time, repeats, seconds, batches, &
+                    runs)
                 write (unit, "(a)") itoa(s)//tab//str(scenes(s))//tab//str(scenes(s) - e_crit)//tab &
                     //method_label(methods(m))//tab//method_name(methods(m))//tab &
                     //kind_name(methods(m)%precision)//tab//str(method_setting(methods(m))) &
@@ -165,7 +177,7 @@ contains
                     write (unit_cost, "(a)") str(scenes(s))//tab//method_label(methods(m))//tab &
                         //method_name(methods(m))//tab//kind_name(methods(m)%precision)//tab &
                         //str(method_setting(methods(m)))//tab//itoa(ref%n)//tab//itoa(run%n) &
-                        //tab//str(1.0e9_qp*seconds)//tab//str(1.0e9_qp*seconds/max(1, run%n)) &
+                        //tab//str(ns_per_s*seconds)//tab//str(ns_per_s*seconds/max(1, run%n)) &
                         //tab//category_word(classify(ref, run, &
                         method_v_tol(methods(m), scene%v0)))
                 end if
@@ -178,12 +190,14 @@ contains
     !> methods_stability.tsv: the category of each method on the map over e,
     !> from 1 down through e_c to 0, log-spaced in |e - e_c| from 1e-7 on.
     subroutine stability()
+        !> One point in this many lies below e_c.
+        integer, parameter :: below_part = 4
         type(outcome_t) :: ref, run
         type(scene_t) :: scene
         real(qp), allocatable :: es(:)
         real(qp) :: lo, hi
         integer :: n_above, n_below, j, m, unit, row, category
-        n_below = points/4
+        n_below = points/below_part
         n_above = points - n_below
         allocate (es(points))
         lo = log10(closest)
@@ -229,10 +243,11 @@ contains
         type(method_t), allocatable :: chosen(:)
         type(outcome_t) :: ref, run
         type(scene_t) :: scene
-        real(qp) :: right_log, wrong_log, mid_log
-        integer :: m, k, k_right, n_right, unit, j, ref_limit
+        real(qp) :: right_log, wrong_log, nan
+        integer :: m, k, k_right, n_right, unit, ref_limit
         logical :: reliable
-        chosen = [engines_of_each_kind(), engines_with_tiny_tol(), &
+        nan = ieee_value(nan, ieee_quiet_nan)
+        chosen = [engine_methods(tiny_tol=.false.), engine_methods(tiny_tol=.true.), &
             new_method(method_absolute, dp), new_method(method_absolute, qp)]
         ! The reference itself holds to the decade where it still ends normally.
         ref_limit = 0
@@ -259,49 +274,26 @@ contains
             wrong_log = right_log - 1
             reliable = k_right < ref_limit
             if (k_right > 0 .and. reliable) then
-                do j = 1, refine_steps
-                    mid_log = 0.5_qp*(right_log + wrong_log)
-                    if (right_at(chosen(m), mid_log, run)) then
-                        right_log = mid_log
-                    else
-                        wrong_log = mid_log
-                    end if
-                end do
+                tested = chosen(m)
+                call bisect(wrong_at, wrong_log, right_log, 0.0_qp, refine_steps)
             end if
             write (unit, "(a)") method_label(chosen(m))//tab//method_name(chosen(m))//tab &
                 //kind_name(chosen(m)%precision)//tab//str(method_setting(chosen(m)))//tab &
-                //distance_str(-real(k_right, qp), k_right > 0)//tab//itoa(n_right)//tab &
-                //distance_str(right_log, k_right > 0 .and. reliable)//tab &
+                //str(merge(10.0_qp**(-real(k_right, qp)), nan, k_right > 0))//tab &
+                //itoa(n_right)//tab &
+                //str(merge(10.0_qp**right_log, nan, k_right > 0 .and. reliable))//tab &
                 //str(10.0_qp**(-ref_limit))
         end do
         close (unit)
     end subroutine min_distance
 
-    !> The engine in every kind built, with its kind's epsilon as tolerance.
-    function engines_of_each_kind() result(engines)
-        type(method_t), allocatable :: engines(:)
-        integer :: k
-        engines = [(new_method(method_engine, built_kinds(k)%precision), &
-            k = 1, size(built_kinds))]
-    end function engines_of_each_kind
-
-    !> The engine in every kind built narrower than the reference's (the
-    !> widest, last of built_kinds), with
-    !> tol = sqrt(tiny) of its kind: how far relative variables reach.
-    function engines_with_tiny_tol() result(engines)
-        type(method_t), allocatable :: engines(:)
-        integer :: k
-        engines = [(new_method(method_engine, built_kinds(k)%precision, &
-            tol=built_kinds(k)%sqrt_tiny), k = 1, size(built_kinds) - 1)]
-    end function engines_with_tiny_tol
-
-    !> sqrt(tiny) of a kind built, in real128.
-    pure real(qp) function sqrt_tiny(precision)
-        integer, intent(in) :: precision
-        type(kind_info_t) :: info
-        info = kind_info(precision)
-        sqrt_tiny = info%sqrt_tiny
-    end function sqrt_tiny
+    !> Whether the method `tested` misses the reference's collision sequence
+    !> at e = e_c + 10^log_distance, for bisect.
+    logical function wrong_at(log_distance)
+        real(qp), intent(in) :: log_distance
+        type(outcome_t) :: run
+        wrong_at = .not. right_at(tested, log_distance, run)
+    end function wrong_at
 
     !> Whether `method` gives the reference's collision sequence at
     !> e = e_c + 10^log_distance.
@@ -347,52 +339,6 @@ contains
         close (unit)
     end subroutine platform
 
-    !> Median CPU time per run of a prepared method: `batches` batches of
-    !> `runs` runs each, so that the whole takes about min_time; a run slower
-    !> than min_time is timed once. The batch size is calibrated by doubling
-    !> the number of runs until they take a measurable part of a batch, so that
-    !> a coarse clock cannot make a fast run look free.
-    subroutine time_runs(method, seconds, batches, runs)
-        type(method_t), intent(inout) :: method
-        real(qp), intent(out) :: seconds
-        integer, intent(out) :: batches, runs
-        type(outcome_t) :: run
-        real(dp), allocatable :: samples(:)
-        real(dp) :: t0, t1, single, batch_time
-        integer :: b, j
-        integer, parameter :: max_runs = 2**24
-        batch_time = real(min_time, dp)/repeats
-        call method_run(method, run)
-        runs = 1
-        do
-            call cpu_time(t0)
-            do j = 1, runs
-                call method_run(method, run)
-            end do
-            call cpu_time(t1)
-            if (t1 - t0 >= 0.25_dp*batch_time .or. runs >= max_runs) exit
-            runs = 2*runs
-        end do
-        single = (t1 - t0)/runs
-        if (runs == 1 .and. single >= real(min_time, dp)) then
-            seconds = single
-            batches = 1
-            return
-        end if
-        batches = repeats
-        runs = max(1, min(max_runs, ceiling(batch_time/max(single, tiny(1.0_dp)))))
-        allocate (samples(batches))
-        do b = 1, batches
-            call cpu_time(t0)
-            do j = 1, runs
-                call method_run(method, run)
-            end do
-            call cpu_time(t1)
-            samples(b) = (t1 - t0)/runs
-        end do
-        seconds = median(samples)
-    end subroutine time_runs
-
     subroutine scene_at(e, scene)
         real(qp), intent(in) :: e
         type(scene_t), intent(out) :: scene
@@ -429,17 +375,5 @@ contains
             word = "no"
         end if
     end function yes_no
-
-    !> 10^log_distance with every digit, or nan where nothing was found.
-    function distance_str(log_distance, found) result(text)
-        real(qp), intent(in) :: log_distance
-        logical, intent(in) :: found
-        character(len=:), allocatable :: text
-        if (found) then
-            text = str(10.0_qp**log_distance)
-        else
-            text = "nan"
-        end if
-    end function distance_str
 
 end program c12_methods

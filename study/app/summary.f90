@@ -3,97 +3,144 @@
 !> from the per-task answer tables.
 program c12_summary
     use sphere_row_tables, only: open_table, tab, split_tabs
+    use sphere_row, only: qp, short_text
     use sphere_row_study_cli, only: cli_t, start_program, read_keys, fail, stop_unless_normal
     implicit none
     character(len=*), parameter :: nl = new_line("a")
-    character(len=*), parameter :: tasks(7) = ["a1   ", "a2   ", "b1   ", "b2   ", "c1   ", &
-        "c2   ", "ecrit"]
+    character(len=*), parameter :: tasks(8) = ["a1      ", "a2      ", "b1      ", &
+        "b2      ", "c1      ", "c2      ", "collapse", "ecrit   "]
+    !> Columns of an answer table whose numbers the prose quotes.
+    integer, parameter :: value = 2, check_value = 4, difference = 5
     type(cli_t) :: cli
     character(len=:), allocatable :: out
     character(len=300) :: msg
     integer :: stat, answers, md, i
 
     call start_program(cli, "c12-summary", &
-        "Reads OUT/<task>_answers.tsv of tasks a1 a2 b1 b2 c1 c2 ecrit and writes"//nl// &
-        "OUT/answers.tsv and OUT/summary.md.")
+        "Reads OUT/<task>_answers.tsv of tasks a1 a2 b1 b2 c1 c2 collapse ecrit and"//nl// &
+        "writes OUT/answers.tsv and OUT/summary.md.")
     call read_keys(cli)
     out = cli%get_word("out")
     call check_inputs()
 
     call write_overview()
 
-    call section("a1", "Task a1: the gaps y_i(t) for e = 0.2", [character(len=60) :: &
-        "a1_paths"], &
-        "The engine carries the gaps y_i and their rates in real(16) and finds each "// &
-        "next collision in closed form (t_i = y_i / (-dy_i), the earliest wins); between "// &
-        "events the paths are exactly linear, so a1_paths.tsv lists the breakpoints "// &
-        "(every collision) and the window's ends. By hand: sphere 1 reaches sphere 2 at "// &
-        "t1 = a/v0; sphere 2 leaves with (1+e) v0/2 and reaches sphere 3 at "// &
-        "t2 = a/v0 (1 + 2/(1+e)).")
-    call section("a2", "Task a2: final velocities, elastic and quasi-plastic", &
-        [character(len=60) :: ""], &
-        "For e = 1 and equal masses each collision exchanges the two velocities, so the "// &
-        "motion is handed down the row in three collisions and ends in sphere 4. Below "// &
-        "the critical restitution of b1 the row collapses: infinitely many collisions "// &
-        "in finite time, whose limit the engine takes (the group moves on with its "// &
-        "momentum-weighted velocity). By momentum all four then move with m1 v0/sum(m) "// &
-        "= v0/4; the measure of 'sufficiently equal' is the spread (max v - min v)/v0.")
-    call section("b1", "Task b1: number of collisions n(e) and the critical restitution", &
-        [character(len=60) :: "b1_n", "b1_critical"], &
-        "A scan of e from 1 to 0 (b1_scan.tsv) finds every change of the collision "// &
-        "sequence between neighbours and bisects it to 1e-12 (b1_intervals.tsv: each "// &
-        "interval of constant n with its sequence). As e falls towards e_crit, n grows "// &
-        "without bound: near e_crit the run follows a cycle of collisions (e.g. "// &
-        "12123232 or 121323) whose linear map M(e) on the gap rates, a product of the "// &
-        "maps (6), has three real eigenvalues below e_crit and a complex pair "// &
-        "r exp(+-i theta) above it. A self-similar collapse needs a real dominant "// &
-        "eigenvector, so below e_crit the collisions never end; above it the phase "// &
-        "theta ~ sqrt(e - e_crit) turns the state out of the cycle after about "// &
-        "pi/theta cycles, hence n ~ (e - e_crit)^(-1/2). e_crit is the sign change of "// &
-        "the discriminant of det(M(e) - lambda) bisected in real(16); it agrees with "// &
-        "tan^2(pi/8) = 3 - 2 sqrt(2) to all digits. The simulation alone (collapsed "// &
-        "against finite runs, tolerance 1e-4000) brackets it from above to ~1e-8: a "// &
-        "finite run this close to e_crit shrinks its relative velocities below any "// &
-        "fixed tolerance. With the default tolerance (epsilon v0) the quasi-plastic "// &
-        "case is reported from b1.e_quasi_plastic down.")
-    call section("b2", "Task b2: final velocities against e", &
-        [character(len=60) :: "b2_velocities"], &
-        "On an interval of constant collision sequence each final velocity is a "// &
-        "polynomial in e, the product of the collision maps (2), whose coefficients "// &
-        "(b2_closed_forms.tsv) are exact dyadic rationals for equal masses. From e = 1 "// &
-        "down to b2.single_hit_e_min sphere 4 is hit once, after 1-2 and 2-3 have each "// &
-        "passed on the factor (1+e)/2, so v4 = v0 ((1+e)/2)^3 there. Below e_crit all "// &
-        "velocities are v0/4.")
-    call section("c1", "Task c1: e for v4 = v0/2 (boundary value problem)", &
-        [character(len=60) :: "c1_secant"], &
-        "A secant iteration of our own in real(16) on r(e) = v4(e) - v0/2, each "// &
-        "evaluation a full run. The root lies where sphere 4 is hit once, so by hand "// &
-        "((1+e)/2)^3 = 1/2, e = 4^(1/3) - 1. v4(e) is only piecewise smooth and flat "// &
-        "(v0/4) below e_crit: the solver reports a flat residual, a step out of [0, 1] "// &
-        "and stagnation instead of returning a root (c1_starts.tsv).")
-    call section("c2", "Task c2: e normally distributed (Monte Carlo)", &
-        [character(len=60) :: "c2_ecdf", "c2_histogram", "c2_convergence"], &
-        "e ~ N(0.5, 0.05) by Box-Muller from GSL's mt19937 uniforms (seeded), one "// &
-        "real(16) run per sample. Where sphere 4 is hit once (all but about 3e-5 of "// &
-        "the mass of this law) v4 = v0 ((1+e)/2)^3 is monotone in e, so its exact law is "// &
-        "P(v4 <= v) = Phi((2 (v/v0)^(1/3) - 1 - m)/s), with mean ((1+m)^3 + 3 (1+m) s^2)/8 "// &
-        "and quantiles ((1 + m + s z_q)/2)^3: the checks of the table.")
-    call section("ecrit", "Study e_crit(p): critical restitution of the struck row of p spheres", &
-        [character(len=60) :: "ecrit"], &
-        "For p = 3 ... 64 equal spheres (a = d = v0 = 1) a scan of e decides each run by the "// &
-        "engine's collapse machinery (certified cycle limit, fallback limit, finite end, or "// &
-        "undecided at max_collisions; ecrit.tsv) and bisects the edge of the finite region: "// &
-        "in real64 (tol = sqrt(tiny)) for every p, again in real(16) with tol = 1e-4000 for "// &
-        "p <= 6. For p <= 6 the collision pattern of a run just below the edge gives the "// &
-        "rate map M(e) of the collapse cycle, and e_c is where its two dominant eigenvalues "// &
-        "merge into a complex pair (bisected in real(16)): tan^2(pi/12) = 7 - 4 sqrt(3) for "// &
-        "p = 3 and tan^2(pi/8) = 3 - 2 sqrt(2) for p = 4. The fallback edge lies about "// &
-        "2e-8 above these values (finite runs that close to e_c exhaust even 4000 decades); "// &
-        "for p >= 14 the real64 edge is bisected against runs that stay undecided at "// &
-        "max_collisions, so there it is a cap-dependent estimate, not a certified bound.")
+    call sections_a()
+    call sections_b()
+    call sections_c()
+    call sections_beyond()
     close (md)
 
 contains
+
+    !> The sections of tasks a1 and a2: the gaps of one run, the final velocities
+    !> of two.
+    subroutine sections_a()
+        call section("a1", "Task a1: the gaps y_i(t) for e = "//short("a1", "a1.e"), &
+            [character(len=60) :: "a1_paths"], &
+            "The engine carries the gaps y_i and their rates in real(16) and finds each "// &
+            "next collision in closed form (t_i = y_i / (-dy_i), the earliest wins); between "// &
+            "events the paths are exactly linear, so a1_paths.tsv lists the breakpoints "// &
+            "(every collision) and the window's ends. By hand: sphere 1 reaches sphere 2 at "// &
+            "t1 = a/v0; sphere 2 leaves with (1+e) v0/2 and reaches sphere 3 at "// &
+            "t2 = a/v0 (1 + 2/(1+e)).")
+        call section("a2", "Task a2: final velocities, elastic and quasi-plastic", &
+            [character(len=60) :: ""], &
+            "For e = 1 and equal masses each collision exchanges the two velocities, so the "// &
+            "motion is handed down the row in p - 1 collisions and ends in the last "// &
+            "sphere. Below the critical restitution of b1 the row collapses: infinitely "// &
+            "many collisions in finite time, whose limit the engine takes (the group moves "// &
+            "on with its momentum-weighted velocity). By momentum all p spheres then move "// &
+            "with m1 v0/sum(m) (v0/p for equal masses); the measure of 'sufficiently equal' "// &
+            "is the spread (max v - min v)/v0.")
+    end subroutine sections_a
+
+    !> The sections of tasks b1 and b2: the collisions and the final velocities
+    !> over e.
+    subroutine sections_b()
+        call section("b1", "Task b1: number of collisions n(e) and the critical restitution", &
+            [character(len=60) :: "b1_n", "b1_critical"], &
+            "A scan of e from 1 to 0 (b1_scan.tsv) finds every change of the collision "// &
+            "sequence between neighbours and bisects it to "//short("b1", "b1.resolution")// &
+            " (b1_intervals.tsv: each interval of constant n with its sequence). As e "// &
+            "falls towards e_crit, n grows without bound: near e_crit the run follows a "// &
+            "cycle of collisions (b1.e_crit names the one found) whose linear map M(e) on "// &
+            "the gap rates, a product of the maps (6), has three real eigenvalues below "// &
+            "e_crit and a complex pair r exp(+-i theta) above it. A self-similar collapse "// &
+            "needs a real dominant eigenvector, so below e_crit the collisions never end; "// &
+            "above it the phase theta ~ sqrt(e - e_crit) turns the state out of the cycle "// &
+            "after about pi/theta cycles, hence n ~ (e - e_crit)^(-1/2). e_crit is the sign "// &
+            "change of the discriminant of det(M(e) - lambda) bisected in real(16); it "// &
+            "agrees with tan^2(pi/8) = 3 - 2 sqrt(2) to all digits. The simulation alone "// &
+            "(collapsed against finite runs, tolerance "//short("b1", "b1.tol_fine")// &
+            ") brackets it from above to ~"//short("b1", "b1.e_crit_simulation", difference, 1) &
+            //": a finite run this close to e_crit shrinks its relative velocities below "// &
+            "any fixed tolerance. With the default tolerance (epsilon v0) the quasi-plastic "// &
+            "case is reported from b1.e_quasi_plastic down.")
+        call section("b2", "Task b2: final velocities against e", &
+            [character(len=60) :: "b2_velocities"], &
+            "On an interval of constant collision sequence each final velocity is a "// &
+            "polynomial in e, the product of the collision maps (2), whose coefficients "// &
+            "(b2_closed_forms.tsv) are exact dyadic rationals for equal masses. From e = 1 "// &
+            "down to b2.single_hit_e_min the last sphere p is hit once, after each pair "// &
+            "before it has passed on the factor (1+e)/2, so v_p = v0 ((1+e)/2)^(p-1) there. "// &
+            "Below e_crit all velocities are m1 v0/sum(m).")
+    end subroutine sections_b
+
+    !> The sections of tasks c1 and c2: the boundary value problem and the Monte
+    !> Carlo.
+    subroutine sections_c()
+        call section("c1", "Task c1: e for v_p = "//short("c1", "c1.v4", check_value)// &
+            " (boundary value problem)", &
+            [character(len=60) :: "c1_secant"], &
+            "A secant iteration of our own in real(16) on r(e) = v_p(e) - target v0, each "// &
+            "evaluation a full run. Where the root lies in the range in which the last "// &
+            "sphere is hit once, by hand ((1+e)/2)^(p-1) = target, so "// &
+            "e = 2 target^(1/(p-1)) - 1 (c1.e). v_p(e) is only piecewise smooth and flat "// &
+            "(m1 v0/sum(m)) below e_crit: the solver reports a flat residual, a step out of "// &
+            "[0, 1] and stagnation instead of returning a root (c1_starts.tsv).")
+        call section("c2", "Task c2: e normally distributed (Monte Carlo)", &
+            [character(len=60) :: "c2_ecdf", "c2_histogram", "c2_convergence"], &
+            "e ~ N("//short("c2", "c2.e_mean", check_value)//", "// &
+            short("c2", "c2.e_sd", check_value)//") by Box-Muller from GSL's mt19937 "// &
+            "uniforms (seeded), one real(16) run per sample. Where sphere 4 is hit once "// &
+            "(all but about "//outside_share()//" of the mass of this law) "// &
+            "v4 = v0 ((1+e)/2)^3 is monotone in e, so its exact law is "// &
+            "P(v4 <= v) = Phi((2 (v/v0)^(1/3) - 1 - m)/s), with mean "// &
+            "((1+m)^3 + 3 (1+m) s^2)/8 "// &
+            "and quantiles ((1 + m + s z_q)/2)^3: the checks of the table.")
+    end subroutine sections_c
+
+    !> The sections beyond the benchmark: collapse in general rows, and the
+    !> critical restitution of rows of any length.
+    subroutine sections_beyond()
+        call section("collapse", "Collapse in general rows", &
+            [character(len=60) :: "collapse_by_p"], &
+            "Seeded random rows (p from 2, masses equal or log-uniform over six decades, "// &
+            "e uniform in [0, 1], a fifth of the gaps closed) run to their end with the "// &
+            "collapse limits in closed form (a plastic cascade pooled at e = 0, a collision "// &
+            "cycle certified to repeat for ever) and, for the first of them, with the "// &
+            "fallback alone (every rate and gap of a group insignificant). "// &
+            field("collapse", "collapse.answered")//" of "// &
+            field("collapse", "collapse.answered", check_value)//" rows end within the "// &
+            "collision cap (collapse_survey.tsv); the rest are cascades at one instant "// &
+            "through touching spheres at 0 < e < 1, whose binary collisions follow no "// &
+            "repeating order, so that neither a cycle nor the fallback ends them soon.")
+        call section("ecrit", "e_crit(p): critical restitution of the struck row of p spheres", &
+            [character(len=60) :: "ecrit"], &
+            "For every p equal spheres (a = d = v0 = 1) a scan of e decides each run by the "// &
+            "engine's collapse machinery (a certified cycle limit, a fallback limit, a finite "// &
+            "end, or undecided at max_collisions; ecrit.tsv) and bisects the edge of the "// &
+            "finite region. For the shortest rows the collision pattern of a run just below "// &
+            "the edge gives the rate map M(e) of the collapse cycle, and e_c is where its two "// &
+            "dominant eigenvalues merge into a complex pair (bisected in real(16)): "// &
+            short("ecrit", "ecrit.p3")//" = 7 - 4 sqrt(3) for p = 3 and "// &
+            short("ecrit", "ecrit.p4")//" = 3 - 2 sqrt(2) for p = 4. Where the edge of long "// &
+            "rows is bisected against runs still undecided at max_collisions ("// &
+            field("ecrit", "ecrit.edges_capped")//" rows) it is an estimate that moves "// &
+            "with the cap, not a certified bound; 1 - e_c ~ "// &
+            short("ecrit", "ecrit.power_c")//" p^(-"//short("ecrit", "ecrit.power_beta")//").")
+    end subroutine sections_beyond
 
     !> answers.tsv, and the head of summary.md with the table of every answer.
     subroutine write_overview()
@@ -160,6 +207,62 @@ contains
         end do
         close (u)
     end subroutine answer_rows
+
+    !> Column `col` of the row `key` in the answer table of `task`, shortened to
+    !> the digits that read back (at most `digits`): the prose quotes the run's
+    !> own parameters and results, not fixed numbers.
+    function short(task, key, col, digits) result(text)
+        character(len=*), intent(in) :: task, key
+        integer, intent(in), optional :: col, digits
+        character(len=:), allocatable :: text
+        real(qp) :: x
+        integer :: ios
+        text = field(task, key, col)
+        read (text, *, iostat=ios) x
+        if (ios == 0) text = short_text(x, digits)
+    end function short
+
+    !> The share of the law of e outside the range where sphere 4 is struck
+    !> once, from c2's expected count of such draws in its sample, to one digit.
+    function outside_share() result(text)
+        character(len=:), allocatable :: text
+        character(len=:), allocatable :: expected_text, n_text
+        real(qp) :: expected, n
+        integer :: ios_1, ios_2
+        text = "?"
+        expected_text = field("c2", "c2.outside_region", check_value)
+        n_text = field("c2", "c2.n", value)
+        read (expected_text, *, iostat=ios_1) expected
+        read (n_text, *, iostat=ios_2) n
+        if (ios_1 == 0 .and. ios_2 == 0) text = short_text(expected/n, 1)
+    end function outside_share
+
+    !> Column `col` (default the value) of the row `key` in the answer table
+    !> of `task`; the run stops if the row is missing.
+    function field(task, key, col) result(text)
+        character(len=*), intent(in) :: task, key
+        integer, intent(in), optional :: col
+        character(len=:), allocatable :: text
+        character(len=:), allocatable :: f(:)
+        character(len=4000) :: line
+        integer :: u, ios, c
+        c = value
+        if (present(col)) c = col
+        open (newunit=u, file=out//"/"//task//"_answers.tsv", status="old", action="read")
+        do
+            read (u, "(a)", iostat=ios) line
+            if (ios /= 0) exit
+            call split_tabs(trim(line), f)
+            if (size(f) < c) cycle
+            if (trim(f(1)) /= key) cycle
+            text = trim(f(c))
+            close (u)
+            return
+        end do
+        close (u)
+        call fail("out = "//out//": "//task//"_answers.tsv has no row "//key// &
+            ": run make study")
+    end function field
 
     logical function exists(path)
         character(len=*), intent(in) :: path

@@ -5,21 +5,11 @@
 module sphere_row_analysis
     use sphere_row, only: qp, event_log_t, status_normal, status_invalid, event_collision, &
         event_collapse
+    use sphere_row_bisection, only: bisect
     implicit none
     private
     public :: sequence_of, sequence_text, sequence_hash, tail_period, rate_map
     public :: cubic_discriminant, critical_restitution, sequence_polynomials, poly_eval
-    public :: class_fn, bisect_changes
-
-    abstract interface
-        !> A label of the outcome at e (for instance a sequence fingerprint):
-        !> its changes are what bisect_changes looks for.
-        function class_fn(e) result(class)
-            import :: qp
-            real(qp), intent(in) :: e
-            integer(8) :: class
-        end function class_fn
-    end interface
 
 contains
 
@@ -113,28 +103,6 @@ contains
         end do
     end function tail_period
 
-    !> Every change of class(e) between a < b (classes ca /= cb), bisected
-    !> until the bracket is at most `resolution` wide; the bracket midpoints
-    !> are appended to `boundaries`. Both halves are searched whenever the
-    !> midpoint differs from both ends, so several changes between a and b are
-    !> found as long as a midpoint falls between them.
-    recursive subroutine bisect_changes(classify, a, b, ca, cb, resolution, boundaries)
-        procedure(class_fn) :: classify
-        real(qp), intent(in) :: a, b, resolution
-        integer(8), intent(in) :: ca, cb
-        real(qp), allocatable, intent(inout) :: boundaries(:)
-        real(qp) :: m
-        integer(8) :: cm
-        m = 0.5_qp*(a + b)
-        if (b - a <= resolution .or. m <= a .or. m >= b) then
-            boundaries = [boundaries, m]
-            return
-        end if
-        cm = classify(m)
-        if (cm /= ca) call bisect_changes(classify, a, m, ca, cm, resolution, boundaries)
-        if (cm /= cb) call bisect_changes(classify, m, b, cm, cb, resolution, boundaries)
-    end subroutine bisect_changes
-
     !> Matrix `a` of size (p-1, p-1) that maps the gap rates before the
     !> collisions `pairs` to the rates after them, by (6) with masses m.
     pure subroutine rate_map(m, e, pairs, a)
@@ -191,8 +159,9 @@ contains
         integer, intent(in) :: cycle(:)
         real(qp), intent(out) :: e_c
         integer, intent(out) :: stat
-        real(qp) :: lo, hi, mid, a(3, 3), d_lo, d_mid
-        integer :: it
+        real(qp) :: lo, hi, a(3, 3), d_lo
+        !> Most halvings: more than real128 can resolve in [0, 1].
+        integer, parameter :: max_steps = 200
         e_c = 0.0_qp
         stat = status_invalid
         if (size(m) /= 4 .or. size(cycle) == 0) return
@@ -202,19 +171,20 @@ contains
         d_lo = cubic_discriminant(a)
         call rate_map(m, hi, cycle, a)
         if (sign(1.0_qp, d_lo) == sign(1.0_qp, cubic_discriminant(a))) return
-        do it = 1, 200
-            mid = 0.5_qp*(lo + hi)
-            if (mid <= lo .or. mid >= hi) exit
-            call rate_map(m, mid, cycle, a)
-            d_mid = cubic_discriminant(a)
-            if (sign(1.0_qp, d_mid) == sign(1.0_qp, d_lo)) then
-                lo = mid
-            else
-                hi = mid
-            end if
-        end do
+        call bisect(same_sign_as_lo, lo, hi, 0.0_qp, max_steps)
         e_c = 0.5_qp*(lo + hi)
         stat = status_normal
+
+    contains
+
+        !> Whether the discriminant at e has the sign it has at e_lo.
+        logical function same_sign_as_lo(e) result(same)
+            real(qp), intent(in) :: e
+            real(qp) :: map(3, 3)
+            call rate_map(m, e, cycle, map)
+            same = sign(1.0_qp, cubic_discriminant(map)) == sign(1.0_qp, d_lo)
+        end function same_sign_as_lo
+
     end subroutine critical_restitution
 
     !> Final velocities after the collisions `pairs` of a row struck at v0, as

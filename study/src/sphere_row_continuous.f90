@@ -102,46 +102,7 @@ contains
             write (out%message, "(a, es10.3, a)") "tol = ", tol, ": allowed 0 < tol < 1"
             return
         end if
-        p = scene%p
-        n = 2*p
-        events_max = scene%max_collisions
-        if (present(max_events)) events_max = max_events
-        length = max(scene%d, maxval(scene%a))
-        if (length <= 0.0_dp) length = 1.0_dp
-        time_scale = length/scene%v0
-        horizon = default_horizon*time_scale
-        if (present(t_max)) horizon = t_max
-        tv = tol*scene%v0
-        t_tol = max(tol, event_floor_ulps*epsilon(1.0_dp))*time_scale
-
-        step_type = gsl_odeiv2_step_rk8pd
-        if (present(stepper)) then
-            if (stepper == stepper_rkf45) step_type = gsl_odeiv2_step_rkf45
-        end if
-        half = int(p, c_int)
-        sys%function = c_funloc(free_motion)
-        sys%jacobian = c_null_funptr
-        sys%dimension = int(n, c_size_t)
-        sys%params = c_loc(half)
-        allocate (u(n), u0(n), u_lo(n), u_mid(n), u_err(n), scale(n))
-        scale(1:p) = length
-        scale(p + 1:n) = scene%v0
-        u(1:p - 1) = scene%a
-        u(p) = 0.0_dp
-        u(p + 1:n) = 0.0_dp
-        u(p + 1) = -scene%v0
-        u(n) = scene%v0
-
-        previous_handler = gsl_set_error_handler_off()
-        step = gsl_odeiv2_step_alloc(step_type, sys%dimension)
-        control = gsl_odeiv2_control_scaled_new(real(tol, c_double), real(tol, c_double), &
-            1.0_c_double, 0.0_c_double, scale, sys%dimension)
-        evolve = gsl_odeiv2_evolve_alloc(sys%dimension)
-        if (.not. (c_associated(step) .and. c_associated(control) .and. &
-            c_associated(evolve))) then
-            out%status = status_solver_failed
-            out%message = "GSL could not allocate the ODE solver"
-        end if
+        call set_up()
 
         t = 0.0_c_double
         h = first_step_fraction*time_scale
@@ -173,17 +134,68 @@ contains
             code = gsl_odeiv2_step_reset(step)
         end do
 
-        if (c_associated(evolve)) call gsl_odeiv2_evolve_free(evolve)
-        if (c_associated(control)) call gsl_odeiv2_control_free(control)
-        if (c_associated(step)) call gsl_odeiv2_step_free(step)
-        previous_handler = gsl_set_error_handler(previous_handler)
-        out%y = real(u(1:p - 1), qp)
-        out%v(1) = real(u(n), qp)
-        do k = 1, p - 1
-            out%v(k + 1) = out%v(k) + real(u(p + k), qp)
-        end do
+        call finish()
 
     contains
+
+        !> Scales, the tolerances derived from them, the initial state (sphere 1
+        !> moving at v0 toward the resting row) and GSL's solver objects.
+        subroutine set_up()
+            p = scene%p
+            n = 2*p
+            events_max = scene%max_collisions
+            if (present(max_events)) events_max = max_events
+            length = max(scene%d, maxval(scene%a))
+            if (length <= 0.0_dp) length = 1.0_dp
+            time_scale = length/scene%v0
+            horizon = default_horizon*time_scale
+            if (present(t_max)) horizon = t_max
+            tv = tol*scene%v0
+            t_tol = max(tol, event_floor_ulps*epsilon(1.0_dp))*time_scale
+
+            step_type = gsl_odeiv2_step_rk8pd
+            if (present(stepper)) then
+                if (stepper == stepper_rkf45) step_type = gsl_odeiv2_step_rkf45
+            end if
+            half = int(p, c_int)
+            sys%function = c_funloc(free_motion)
+            sys%jacobian = c_null_funptr
+            sys%dimension = int(n, c_size_t)
+            sys%params = c_loc(half)
+            allocate (u(n), u0(n), u_lo(n), u_mid(n), u_err(n), scale(n))
+            scale(1:p) = length
+            scale(p + 1:n) = scene%v0
+            u(1:p - 1) = scene%a
+            u(p) = 0.0_dp
+            u(p + 1:n) = 0.0_dp
+            u(p + 1) = -scene%v0
+            u(n) = scene%v0
+
+            previous_handler = gsl_set_error_handler_off()
+            step = gsl_odeiv2_step_alloc(step_type, sys%dimension)
+            control = gsl_odeiv2_control_scaled_new(real(tol, c_double), real(tol, c_double), &
+                1.0_c_double, 0.0_c_double, scale, sys%dimension)
+            evolve = gsl_odeiv2_evolve_alloc(sys%dimension)
+            if (.not. (c_associated(step) .and. c_associated(control) .and. &
+                c_associated(evolve))) then
+                out%status = status_solver_failed
+                out%message = "GSL could not allocate the ODE solver"
+            end if
+        end subroutine set_up
+
+        !> Free GSL's solver objects, restore its error handler, and hand the
+        !> final gaps and velocities to `out`.
+        subroutine finish()
+            if (c_associated(evolve)) call gsl_odeiv2_evolve_free(evolve)
+            if (c_associated(control)) call gsl_odeiv2_control_free(control)
+            if (c_associated(step)) call gsl_odeiv2_step_free(step)
+            previous_handler = gsl_set_error_handler(previous_handler)
+            out%y = real(u(1:p - 1), qp)
+            out%v(1) = real(u(n), qp)
+            do k = 1, p - 1
+                out%v(k + 1) = out%v(k) + real(u(p + k), qp)
+            end do
+        end subroutine finish
 
         !> A gap that was positive at the start of the step is not any more.
         logical function crossed(state)

@@ -12,11 +12,12 @@ module sphere_row_methods
     use sphere_row, only: dp, qp, scene_t, scene_dp_t, status_normal, status_invalid
     use sphere_row_outcome, only: outcome_t, outcome_start
     use sphere_row_kind_engines, only: kind_engine_t, new_kind_engine, convert_scene, &
-        kind_built, kind_info, kind_info_t
+        kind_built, kind_info, kind_info_t, built_kinds
     use sphere_row_absolute_dp, only: simulate_absolute
     use sphere_row_absolute_qp, only: simulate_absolute
     use sphere_row_continuous, only: simulate_ode, stepper_rk8pd, stepper_rkf45, stepper_name
     use sphere_row_stepping, only: simulate_stepping, default_max_steps
+    use sphere_row_sorting, only: median
     implicit none
     private
     public :: method_t, method_engine, method_absolute, method_ode, method_stepping
@@ -24,6 +25,7 @@ module sphere_row_methods
     public :: reference_tol
     public :: new_method, reference_method, method_prepare, method_run
     public :: method_name, method_label, method_setting, method_v_tol, kind_name
+    public :: engine_methods, method_time
 
     !> Method 1: the event engine in relative variables (sphere_row).
     integer, parameter :: method_engine = 1
@@ -47,25 +49,32 @@ module sphere_row_methods
     !> rates below sqrt(tiny) would leave gaps that underflow real128.
     real(qp), parameter :: reference_tol = sqrt(tiny(1.0_qp))
 
+    !> Most runs in one timing batch: a run too fast for the clock even then
+    !> is timed as this many.
+    integer, parameter :: max_batch_runs = 2**24
+    !> A batch size counts as calibrated once its runs take this part of a
+    !> batch's time, well above the clock's resolution.
+    real(dp), parameter :: calibrated_part = 0.25_dp
+
     !> A method with its setting and, once prepared, its scene and work space.
     type :: method_t
         !> One of method_engine, method_absolute, method_ode, method_stepping.
         integer :: id = method_engine
         !> Real kind the method computes in (sp, dp, xdp or qp).
         integer :: precision = qp
-        !> Engine: tolerance of insignificant rates and gaps (negative: the
-        !> kind's epsilon, the engine's default). ODE: the accuracy asked for.
+        !> The engine's tolerance of insignificant rates and gaps (negative: the
+        !> kind's epsilon, the engine's default), or the ODE's accuracy asked for.
         real(qp) :: tol = -1.0_qp
-        !> Time stepping: the step h [L/V].
+        !> The step h [L/V] of time stepping.
         real(qp) :: h = 0.0_qp
-        !> ODE: stepper_rk8pd or stepper_rkf45.
+        !> The ODE's stepper: stepper_rk8pd or stepper_rkf45.
         integer :: stepper = stepper_rk8pd
-        !> Time stepping: the step budget.
+        !> The step budget of time stepping.
         integer(int64) :: max_steps = default_max_steps
         !> Number of spheres of the prepared scene (0: not prepared).
         integer :: p = 0
-        !> Engine: the engine in the method's kind with its prepared scene and
-        !> work space, kept here so that a timed run allocates nothing.
+        !> The engine in the method's kind with its prepared scene and work
+        !> space, kept here so that a timed run allocates nothing.
         class(kind_engine_t), allocatable :: engine
         !> Prepared scene of the real64 methods (absolute, ODE, stepping).
         type(scene_dp_t) :: scene_dp
@@ -284,5 +293,70 @@ contains
         info = kind_info(precision)
         eps = info%epsilon
     end function kind_epsilon
+
+    !> The engine in every kind built, each with its kind's epsilon as
+    !> tolerance; with `tiny_tol`, instead the kinds narrower than the
+    !> reference's (the widest, last of built_kinds), each with tol = sqrt(tiny)
+    !> of its kind: how far the relative variables reach.
+    pure function engine_methods(tiny_tol) result(engines)
+        logical, intent(in) :: tiny_tol
+        type(method_t), allocatable :: engines(:)
+        integer :: k
+        if (tiny_tol) then
+            engines = [(new_method(method_engine, built_kinds(k)%precision, &
+                tol=built_kinds(k)%sqrt_tiny), k=1, size(built_kinds) - 1)]
+        else
+            engines = [(new_method(method_engine, built_kinds(k)%precision), &
+                k=1, size(built_kinds))]
+        end if
+    end function engine_methods
+
+    !> Median CPU time per run of a prepared method: `batches` batches of
+    !> `runs` runs each, so that the whole takes about `min_time` seconds
+    !> spread over `repeats` batches; a run slower than min_time is timed once.
+    !> The batch size is calibrated by doubling the number of runs until they
+    !> take a measurable part of a batch, so that a coarse clock cannot make a
+    !> fast run look free.
+    subroutine method_time(method, min_time, repeats, seconds, batches, runs)
+        type(method_t), intent(inout) :: method
+        real(qp), intent(in) :: min_time
+        integer, intent(in) :: repeats
+        real(qp), intent(out) :: seconds
+        integer, intent(out) :: batches, runs
+        type(outcome_t) :: run
+        real(dp), allocatable :: samples(:)
+        real(dp) :: t0, t1, single, batch_time
+        integer :: b, j
+        batch_time = real(min_time, dp)/repeats
+        call method_run(method, run)
+        runs = 1
+        do
+            call cpu_time(t0)
+            do j = 1, runs
+                call method_run(method, run)
+            end do
+            call cpu_time(t1)
+            if (t1 - t0 >= calibrated_part*batch_time .or. runs >= max_batch_runs) exit
+            runs = 2*runs
+        end do
+        single = (t1 - t0)/runs
+        if (runs == 1 .and. single >= real(min_time, dp)) then
+            seconds = single
+            batches = 1
+            return
+        end if
+        batches = repeats
+        runs = max(1, min(max_batch_runs, ceiling(batch_time/max(single, tiny(1.0_dp)))))
+        allocate (samples(batches))
+        do b = 1, batches
+            call cpu_time(t0)
+            do j = 1, runs
+                call method_run(method, run)
+            end do
+            call cpu_time(t1)
+            samples(b) = (t1 - t0)/runs
+        end do
+        seconds = median(samples)
+    end subroutine method_time
 
 end module sphere_row_methods

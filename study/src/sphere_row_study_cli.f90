@@ -1,7 +1,7 @@
 !> What every study program does with its command line, on the key registry
-!> of `sphere_row_args`: the key `out`, `--help` generated from the keys, the
-!> scene of the scene keys, and one line on stderr with exit status 2 for bad
-!> input.
+!> of `sphere_row_cli` and the scene keys of `sphere_row_scene_keys`: the key
+!> `out`, `--help` generated from the keys, the scene of the scene keys, and
+!> one line on stderr with exit status 2 for bad input.
 !>
 !> A study program registers its keys between `start_program` and
 !> `read_keys`:
@@ -16,8 +16,8 @@
 !> program decides to stop, and these are the procedures it stops with.
 module sphere_row_study_cli
     use sphere_row, only: scene_t, status_normal
-    use sphere_row_args, only: cli_t, read_command_line, scene_from_cli, add_scene_keys, &
-        fail_with => fail
+    use sphere_row_cli, only: cli_t, read_command_line, fail_with => fail
+    use sphere_row_scene_keys, only: scene_from_cli, add_scene_keys
     use sphere_row_error, only: error_t, fatal_error
     implicit none
     private

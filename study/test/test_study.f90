@@ -4,8 +4,8 @@ module test_study
     use sphere_row, only: qp, scene_t, run_t, event_log_t, scene_init, simulate, str, &
         status_normal
     use sphere_row_analysis, only: sequence_of, sequence_hash, sequence_text, tail_period, &
-        rate_map, cubic_discriminant, critical_restitution, sequence_polynomials, poly_eval, &
-        bisect_changes
+        rate_map, cubic_discriminant, critical_restitution, sequence_polynomials, poly_eval
+    use sphere_row_bisection, only: bisect_changes
     use sphere_row_secant, only: secant, secant_result_t, secant_converged, secant_flat, &
         secant_left_interval, secant_invalid
     use testsuite, only: error_t, unittest_t, new_unittest, check

@@ -1,0 +1,175 @@
+!> The scene keys shared by the `sphere-row` CLI and the study programs (p, e,
+!> d, a, gaps, v0, masses, tol, max_collisions) on the key registry of
+!> `sphere_row_cli`, and the scene they give, refused where its scales do not
+!> fit in real(16).
+module sphere_row_scene_keys
+    use sphere_row_kinds, only: qp
+    use sphere_row_format, only: itoa, short_text
+    use sphere_row_status, only: status_normal
+    use sphere_row_error, only: error_t, fatal_error
+    use sphere_row, only: scene_t, scene_init
+    use sphere_row_cli, only: cli_t, find_key, key_index, origin
+    use sphere_row_read, only: printable
+    implicit none
+    private
+    public :: add_scene_keys, scene_from_cli, max_spheres
+
+    !> Largest number of spheres: every per-sphere array of a run is allocated
+    !> from p, so p is bounded to what fits in memory many times over.
+    integer, parameter :: max_spheres = 1000000
+
+    character(len=*), parameter :: nl = new_line("a")
+
+contains
+
+    !> Register the keys of a scene: p, e, d, a, gaps, v0, masses, tol,
+    !> max_collisions, and scene files. Their defaults are the definition's
+    !> scene (those of scene_t, and a = 1); `e_default` replaces its e. A
+    !> program that sets e itself names what sets it in `e_set_by`: the key e
+    !> is then not registered (so refused) and its `--help` says why.
+    pure subroutine add_scene_keys(cli, e_default, e_set_by)
+        type(cli_t), intent(inout) :: cli
+        real(qp), intent(in), optional :: e_default
+        character(len=*), intent(in), optional :: e_set_by
+        type(scene_t) :: defaults
+        real(qp) :: e
+        e = defaults%e
+        if (present(e_default)) e = e_default
+        cli%files = .true.
+        call cli%add_int("p", itoa(defaults%p), "number of spheres", lo=2, hi=max_spheres, &
+            in_file=.true.)
+        if (present(e_set_by)) then
+            if (.not. allocated(cli%about)) cli%about = ""
+            cli%about = cli%about//nl//"The scene key e is not taken: "//e_set_by//" sets e."
+        else
+            call cli%add_real("e", short_text(e), "restitution coefficient of every impact", &
+                lo=0.0_qp, hi=1.0_qp, in_file=.true.)
+        end if
+        call cli%add_real("d", short_text(defaults%d), "sphere diameter", lo=0.0_qp, &
+            in_file=.true.)
+        call cli%add_real("a", "1", "every initial gap", lo=0.0_qp, &
+            in_file=.true.)
+        call cli%add_reals("gaps", "a1,a2,...", "the initial gaps, p-1 values (instead of a)", &
+            lo=0.0_qp, &
+            overrides="a", in_file=.true.)
+        call cli%add_real("v0", short_text(defaults%v0), "speed of sphere 1 at t = 0", &
+            lo=0.0_qp, lo_open=.true., in_file=.true.)
+        call cli%add_reals("masses", "m1,m2,...", "the masses, p values (default: all 1)", &
+            lo=0.0_qp, lo_open=.true., in_file=.true.)
+        call cli%add_real("tol", short_text(defaults%tol), "rates below tol*v0 and gaps " &
+            //"below tol*max(d, a) are insignificant", lo=0.0_qp, hi=1.0_qp, hi_open=.true., &
+            shown=short_text(defaults%tol, 3), in_file=.true.)
+        call cli%add_int("max_collisions", itoa(defaults%max_collisions), &
+            "safety net: a run ends after this many collisions", lo=1, in_file=.true.)
+    end subroutine add_scene_keys
+
+    !> The scene the scene keys of `cli` describe. Beyond each key's own range,
+    !> the lists must have p and p-1 values, and the scene's scales must be
+    !> finite in real(16) so that no time, position or velocity of the run
+    !> overflows: the row's length (p-1) d + sum(gaps), the time scale
+    !> sum(gaps)/v0, the velocity scale v0 sum(m)/min(m) (no sphere ever moves
+    !> faster) and the final positions' scale, that length times (1 + 2
+    !> sum(m)/min(m)).
+    subroutine scene_from_cli(cli, scene, error)
+        type(cli_t), intent(in) :: cli
+        type(scene_t), intent(out) :: scene
+        type(error_t), allocatable, intent(out) :: error
+        real(qp), allocatable :: masses(:), gaps(:)
+        type(scene_t) :: defaults
+        real(qp) :: e
+        integer :: p, stat
+        character(len=400) :: msg
+        p = cli%get_int("p")
+        e = defaults%e
+        if (find_key(cli, "e") > 0) e = cli%get_real("e")
+        if (cli%given("masses")) then
+            masses = cli%get_reals("masses")
+            if (size(masses) /= p) then
+                call fatal_error(error, "masses = "//printable(cli%get_text("masses"))//": " &
+                    //itoa(size(masses))//" values given; allowed exactly p = "//itoa(p) &
+                    //" values, each > 0")
+                return
+            end if
+        else
+            allocate (masses(p), source=1.0_qp)
+        end if
+        if (cli%given("gaps")) then
+            gaps = cli%get_reals("gaps")
+            if (size(gaps) /= p - 1) then
+                call fatal_error(error, "gaps = "//printable(cli%get_text("gaps"))//": " &
+                    //itoa(size(gaps))//" values given; allowed exactly p-1 = "//itoa(p - 1) &
+                    //" values, each >= 0")
+                return
+            end if
+        else
+            allocate (gaps(p - 1), source=cli%get_real("a"))
+        end if
+        call check_scales(cli, p, cli%get_real("d"), cli%get_real("v0"), masses, gaps, error)
+        if (allocated(error)) return
+        call scene_init(scene, stat, msg, p=p, e=e, d=cli%get_real("d"), &
+            v0=cli%get_real("v0"), tol=cli%get_real("tol"), &
+            max_collisions=cli%get_int("max_collisions"), masses=masses, gaps=gaps)
+        if (stat /= status_normal) call fatal_error(error, trim(msg))
+    end subroutine scene_from_cli
+
+    !> Refuse a scene whose length, time, velocity or position scale is not
+    !> finite in real(16), naming the key that makes it so.
+    subroutine check_scales(cli, p, d, v0, masses, gaps, error)
+        type(cli_t), intent(in) :: cli
+        integer, intent(in) :: p
+        real(qp), intent(in) :: d, v0, masses(:), gaps(:)
+        type(error_t), allocatable, intent(out) :: error
+        character(len=*), parameter :: row_text = "(p-1) d + sum(gaps)", &
+            spread_text = "(1 + 2 sum(m)/min(m)) ((p-1) d + sum(gaps))"
+        real(qp) :: row, gap_sum, diameters, ratio, big
+        character(len=:), allocatable :: gap_key, limit, culprit
+        big = huge(1.0_qp)
+        limit = short_text(big, 3, "down")
+        gap_key = "a"
+        if (cli%given("gaps")) gap_key = "gaps"
+        gap_sum = sum(gaps)
+        diameters = real(p - 1, qp)*d
+        row = diameters + gap_sum
+        ! the larger of the two terms of the row's length is the one at fault
+        culprit = gap_key
+        if (.not. (diameters <= big) .or. diameters >= gap_sum) culprit = "d"
+        if (.not. (row <= big)) then
+            call refuse_scale(error, cli, culprit, "the row's length "//row_text &
+                //" overflows real(16); allowed "//row_text//" <= "//limit)
+            return
+        end if
+        if (.not. (gap_sum/v0 <= big)) then
+            call refuse_scale(error, cli, "v0", "the time scale sum(gaps)/v0 overflows " &
+                //"real(16) (sum(gaps) = "//short_text(gap_sum, 3)//"); allowed v0 >= " &
+                //short_text(gap_sum/big, 3, "up"))
+            return
+        end if
+        ratio = sum(masses)/minval(masses)
+        if (.not. (ratio <= big/2.0_qp)) then
+            call refuse_scale(error, cli, "masses", "sum(masses)/min(masses) overflows " &
+                //"real(16); allowed sum(masses)/min(masses) <= " &
+                //short_text(big/2.0_qp, 3, "down"))
+            return
+        end if
+        if (.not. (2.0_qp*ratio*v0 <= big)) then
+            call refuse_scale(error, cli, "v0", "the velocity scale 2 v0 sum(m)/min(m) " &
+                //"overflows real(16); allowed v0 <= "//short_text(big/(2.0_qp*ratio), 3, "down"))
+            return
+        end if
+        if (.not. ((1.0_qp + 2.0_qp*ratio)*row <= big)) then
+            if (ratio > real(p, qp)) culprit = "masses"
+            call refuse_scale(error, cli, culprit, "the positions' scale "//spread_text &
+                //" overflows real(16); allowed "//spread_text//" <= "//limit)
+        end if
+    end subroutine check_scales
+
+    !> The message of a scene refused for its scales, naming key `name` and its value.
+    subroutine refuse_scale(error, cli, name, why)
+        type(error_t), allocatable, intent(out) :: error
+        type(cli_t), intent(in) :: cli
+        character(len=*), intent(in) :: name, why
+        call fatal_error(error, origin(cli%keys(key_index(cli, name)))//name//" = " &
+            //printable(cli%get_text(name))//": "//why)
+    end subroutine refuse_scale
+
+end module sphere_row_scene_keys
