@@ -214,8 +214,9 @@ contains
         end if
         do j = 1, top
             if (outcomes(j) == outcome_cycle) row%b%e_cycle = e_grid(j)
-            if (outcomes(j) == outcome_cycle .or. outcomes(j) == outcome_fallback) &
+            if (outcomes(j) == outcome_cycle .or. outcomes(j) == outcome_fallback) then
                 row%b%e_collapse = e_grid(j)
+            end if
         end do
         call bisect_boundary(coarse, e_lo, e_hi, o_lo, s%resolution_coarse, s%max_steps, row%b)
         row%precision = dp
@@ -240,8 +241,9 @@ contains
         ! 4. e_c from the rate map of the cycle of a run just below the edge
         allocate (row%cycle(0))
         if (p <= s%map_p_max) then
-            if (.not. allocated(fine%scene%m)) &
+            if (.not. allocated(fine%scene%m)) then
                 call runner_init(fine, p, qp, s%tol, s%max_collisions_fine)
+            end if
             row%e_pattern = row%b%e_low*(1.0_qp - s%pattern_offset)
             fine%scene%e = row%e_pattern
             call simulate(fine%scene, fine%run, log)
@@ -496,8 +498,9 @@ contains
             real(qp), intent(in) :: e
             integer, intent(in) :: o
             if (o == outcome_cycle) b%e_cycle = max(b%e_cycle, e)
-            if (o == outcome_cycle .or. o == outcome_fallback) &
+            if (o == outcome_cycle .or. o == outcome_fallback) then
                 b%e_collapse = max(b%e_collapse, e)
+            end if
         end subroutine note
 
     end subroutine bisect_boundary
