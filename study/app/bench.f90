@@ -8,7 +8,7 @@ program c12_bench
     use sphere_row, only: qp, dp, scene_t, scene_init, status_normal, itoa
     use sphere_row_kind_engines, only: built_kinds, kind_info_t, kind_engine_t, new_kind_engine
     use sphere_row_tables, only: open_table, tab, split_tabs, cpu_model
-    use sphere_row_monte_carlo, only: normal_sampler_t, mc_counts_t, monte_carlo_v4
+    use sphere_row_monte_carlo, only: mc_counts_t, monte_carlo_v4
     use sphere_row_study_cli, only: cli_t, start_program, read_keys, fail, stop_unless_normal
     implicit none
     character(len=*), parameter :: nl = new_line("a")
@@ -94,17 +94,14 @@ contains
     !> definition's scene with e ~ N(0.5, 0.05) (target: 2 s on one core).
     subroutine time_monte_carlo()
         type(scene_t) :: scene
-        type(normal_sampler_t) :: sampler
         type(mc_counts_t) :: counts
-        real(dp), allocatable :: v4(:)
+        real(dp), allocatable :: v4(:), e(:)
         integer(int64) :: c0, c1, rate
         call scene_init(scene, stat, msg)
-        call sampler%seed(12, stat, msg)
-        allocate (v4(1000000))
+        allocate (v4(1000000), e(1000000))
         call system_clock(c0, rate)
-        call monte_carlo_v4(sampler, scene, 0.5_qp, 0.05_qp, v4, counts, stat, msg)
+        call monte_carlo_v4(scene, 0.5_qp, 0.05_qp, 12, 1, v4, e, counts, stat, msg)
         call system_clock(c1)
-        call sampler%release()
         write (unit, "(a, f0.3, a)") "c2.monte_carlo_seconds_1e6"//tab, &
             real(c1 - c0)/real(rate), tab//"s"//tab//"10^6 samples in real(16), one core; "// &
             "target 2 s"
