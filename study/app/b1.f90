@@ -21,6 +21,11 @@ program c12_b1
     type(run_t) :: run
     type(event_log_t) :: events
     integer, allocatable :: pairs(:), cycle(:)
+    ! a scan thread's own
+    type(scene_t) :: scan_scene
+    type(run_t) :: scan_run
+    type(event_log_t) :: scan_events
+    integer, allocatable :: scan_pairs(:)
     integer :: stat, unit, j, n_scan, n_bisect_max, n_delta, n_boundaries, period, k
     integer :: n_intervals, n_fit, iterations, stat_c
     real(qp) :: resolution, tol_fine, e_lo, e_hi, e_c, e_c_sim, closed, lo, hi, mid
@@ -49,14 +54,21 @@ program c12_b1
     n_bisect_max = cli%get_int("n_bisect_max")
     tol_fine = cli%get_real("tol_fine")
 
-    ! 1. dense scan of e from 1 down to 0 with the scene's own tolerance
+    ! 1. dense scan of e from 1 down to 0 with the scene's own tolerance; the
+    !    values are independent and run in parallel (OpenMP), each thread with
+    !    its own scene, run and log
     allocate (e_scan(n_scan), n_scan_runs(n_scan), status_scan(n_scan), class_scan(n_scan))
+    !$omp parallel do schedule(dynamic, 8) default(shared) &
+    !$omp private(j, scan_scene, scan_run, scan_events, scan_pairs)
     do j = 1, n_scan
         e_scan(j) = 1.0_qp - real(j - 1, qp)/real(n_scan - 1, qp)
-        call classify(e_scan(j), class_scan(j))
-        n_scan_runs(j) = run%n
-        status_scan(j) = run%status
+        scan_scene = scene
+        call classify_with(e_scan(j), scan_scene, scan_run, scan_events, scan_pairs, &
+            class_scan(j))
+        n_scan_runs(j) = scan_run%n
+        status_scan(j) = scan_run%status
     end do
+    !$omp end parallel do
 
     ! 2. every change of (n, sequence) between neighbours, bisected to `resolution`
     allocate (boundaries(0))
@@ -272,14 +284,25 @@ contains
     subroutine classify(e, class)
         real(qp), intent(in) :: e
         integer(8), intent(out) :: class
-        scene%e = e
-        call simulate(scene, run, events)
-        if (run%status == status_collapsed) then
+        call classify_with(e, scene, run, events, pairs, class)
+    end subroutine classify
+
+    !> classify on the given scene, run, log and sequence (a thread's own).
+    subroutine classify_with(e, on_scene, on_run, on_events, on_pairs, class)
+        real(qp), intent(in) :: e
+        type(scene_t), intent(inout) :: on_scene
+        type(run_t), intent(inout) :: on_run
+        type(event_log_t), intent(inout) :: on_events
+        integer, allocatable, intent(inout) :: on_pairs(:)
+        integer(8), intent(out) :: class
+        on_scene%e = e
+        call simulate(on_scene, on_run, on_events)
+        if (on_run%status == status_collapsed) then
             class = collapsed_class
         else
-            call sequence_of(events, pairs)
-            class = sequence_hash(pairs)
+            call sequence_of(on_events, on_pairs)
+            class = sequence_hash(on_pairs)
         end if
-    end subroutine classify
+    end subroutine classify_with
 
 end program c12_b1

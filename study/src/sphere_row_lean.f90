@@ -233,14 +233,14 @@ contains
 
         !> The class of a gap with rate x: the sign bit first (no soft-float
         !> call for an opening gap), then the two thresholds.
-        integer function classify(x) result(class)
+        integer function classify(x) result(gap_class)
             real(qp), intent(in) :: x
-            class = gap_open
+            gap_class = gap_open
             if (.not. is_negative(x)) return
             if (x < -t_fast) then
-                class = gap_fast
+                gap_class = gap_fast
             else if (x < -self%tv) then
-                class = gap_closing
+                gap_class = gap_closing
             end if
         end function classify
 
