@@ -55,7 +55,7 @@ PNG := $(FIGURES:%=$(RESULTS)/%.png) $(RESULTS)/methods_work_precision.png \
 SVG := $(FIGURES:%=$(RESULTS)/%.svg) $(RESULTS)/methods_work_precision.svg \
        $(RESULTS)/methods_stability.svg
 
-.PHONY: all help prereqs test check-layers study tables figures bench check-results \
+.PHONY: all help prereqs test check-layers study tables figures bench callgrind check-results \
         docs lint clean
 
 all: study
@@ -86,6 +86,11 @@ tables: $(TABLES) ## the study's tables only
 figures: $(PNG) $(SVG) ## the study's figures only
 
 bench: $(RESULTS)/bench.tsv ## speed of the engine per precision and of the study
+
+# exact counts, not times: valgrind is installed on demand, so `make test` and
+# `make study` never need it; bench.tsv copies the last measured counts
+callgrind: $(BUILD_STAMP) ## quad operations per collision of c2's lean path (valgrind)
+	bash tools/callgrind-quad-ops $(BIN) $(RESULTS)
 
 # The layers: the core below the umbrella module (kinds, status, format, the
 # per-kind engine) never imports it; everything above it (CLI, study, tests)
@@ -135,8 +140,9 @@ $(B2) &: $(BUILD_STAMP)
 	$(call study_run,c12-b2)
 $(C1) &: $(BUILD_STAMP)
 	$(call study_run,c12-c1)
+# c2: the main sample of 10^6 runs, its convergence table up to 10^7
 $(C2) &: $(BUILD_STAMP)
-	$(call study_run,c12-c2)
+	$(call study_run,c12-c2,nmax=10000000)
 $(COLLAPSE) &: $(BUILD_STAMP)
 	$(call study_run,c12-collapse)
 $(METHODS) &: $(BUILD_STAMP)

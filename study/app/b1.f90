@@ -71,13 +71,25 @@ contains
 
     !> Step 1: a dense scan of e from 1 down to 0 with the scene's own tolerance.
     subroutine scan()
+        ! a thread's own scene, run and log
+        type(scene_t) :: scan_scene
+        type(run_t) :: scan_run
+        type(event_log_t) :: scan_events
+        integer, allocatable :: scan_pairs(:)
+        integer :: i
         allocate (e_scan(n_scan), n_scan_runs(n_scan), status_scan(n_scan), class_scan(n_scan))
-        do j = 1, n_scan
-            e_scan(j) = 1.0_qp - real(j - 1, qp)/real(n_scan - 1, qp)
-            call classify(e_scan(j), class_scan(j))
-            n_scan_runs(j) = run%n
-            status_scan(j) = run%status
+        ! the values are independent: they run in parallel (OpenMP)
+        !$omp parallel do schedule(dynamic, 8) default(shared) &
+        !$omp private(i, scan_scene, scan_run, scan_events, scan_pairs)
+        do i = 1, n_scan
+            e_scan(i) = 1.0_qp - real(i - 1, qp)/real(n_scan - 1, qp)
+            scan_scene = scene
+            call classify_with(e_scan(i), scan_scene, scan_run, scan_events, scan_pairs, &
+                class_scan(i))
+            n_scan_runs(i) = scan_run%n
+            status_scan(i) = scan_run%status
         end do
+        !$omp end parallel do
     end subroutine scan
 
     !> Step 2: every change of (n, sequence) between neighbours of the scan,
@@ -321,14 +333,25 @@ contains
     subroutine classify(e, class)
         real(qp), intent(in) :: e
         integer(8), intent(out) :: class
-        scene%e = e
-        call simulate(scene, run, events)
-        if (run%status == status_collapsed) then
+        call classify_with(e, scene, run, events, pairs, class)
+    end subroutine classify
+
+    !> The class of the run at e on a scene, run and log of the caller's.
+    subroutine classify_with(e, on_scene, on_run, on_events, on_pairs, class)
+        real(qp), intent(in) :: e
+        type(scene_t), intent(inout) :: on_scene
+        type(run_t), intent(inout) :: on_run
+        type(event_log_t), intent(inout) :: on_events
+        integer, allocatable, intent(inout) :: on_pairs(:)
+        integer(8), intent(out) :: class
+        on_scene%e = e
+        call simulate(on_scene, on_run, on_events)
+        if (on_run%status == status_collapsed) then
             class = collapsed_class
         else
-            call sequence_of(events, pairs)
-            class = sequence_hash(pairs)
+            call sequence_of(on_events, on_pairs)
+            class = sequence_hash(on_pairs)
         end if
-    end subroutine classify
+    end subroutine classify_with
 
 end program c12_b1

@@ -5,17 +5,21 @@
 program c12_bench
     use, intrinsic :: iso_fortran_env, only: compiler_version, compiler_options, &
         int64
-    use sphere_row, only: qp, dp, scene_t, scene_init, status_normal, itoa
+    use sphere_row, only: qp, dp, scene_t, scene_init, status_normal, itoa, real_str
     use sphere_row_kind_engines, only: built_kinds, kind_info_t, kind_engine_t, new_kind_engine
     use sphere_row_tables, only: open_table, tab, split_tabs, cpu_model
-    use sphere_row_monte_carlo, only: normal_sampler_t, mc_counts_t, monte_carlo_v4
+    use sphere_row_monte_carlo, only: mc_counts_t, monte_carlo_v4
     use sphere_row_study_cli, only: cli_t, start_program, read_keys, fail, stop_unless_normal
+    use sphere_row_sorting, only: median
     implicit none
     character(len=*), parameter :: nl = new_line("a")
     character(len=*), parameter :: tasks(7) = [character(len=7) :: "a1", "a2", "b1", &
         "b2", "c1", "c2", "methods"]
     type(cli_t) :: cli
-    character(len=:), allocatable :: out
+    character(len=:), allocatable :: out, bin
+    !> Pairs of runs of the side-by-side timings.
+    integer, parameter :: pairs = 5
+    character(len=4000) :: arg0
     character(len=300) :: msg
     real(qp) :: seconds, e_values(3) = [0.2_qp, 0.5_qp, 0.18_qp]
     real :: min_seconds
@@ -28,6 +32,10 @@ program c12_bench
         lo=0.0_qp, hi=100.0_qp, lo_open=.true., hi_open=.true.)
     call read_keys(cli)
     out = cli%get_word("out")
+    ! the study's programs are installed next to this one
+    call get_command_argument(0, arg0)
+    bin = "."
+    if (index(arg0, "/", back=.true.) > 0) bin = arg0(:index(arg0, "/", back=.true.) - 1)
     min_seconds = real(cli%get_real("min_seconds"))
 
     call open_table(out, "bench.tsv", "quantity"//tab//"value"//tab//"unit"//tab//"note", &
@@ -42,6 +50,8 @@ program c12_bench
         end do
     end do
     call time_monte_carlo()
+    call side_by_side()
+    call callgrind_counts()
     call method_costs()
     seconds = 0
     do i = 1, size(tasks)
@@ -91,23 +101,21 @@ contains
     end subroutine time_kind
 
     !> Wall time of the c2 Monte Carlo loop alone: 10^6 real(16) runs of the
-    !> definition's scene with e ~ N(0.5, 0.05) (target: 2 s on one core).
+    !> definition's scene with e ~ N(0.5, 0.05) on the lean path (as many
+    !> threads as OpenMP gives).
     subroutine time_monte_carlo()
         type(scene_t) :: scene
-        type(normal_sampler_t) :: sampler
         type(mc_counts_t) :: counts
-        real(dp), allocatable :: v4(:)
+        real(dp), allocatable :: v4(:), e(:)
         integer(int64) :: c0, c1, rate
         call scene_init(scene, stat, msg)
-        call sampler%seed(12, stat, msg)
-        allocate (v4(1000000))
+        allocate (v4(1000000), e(1000000))
         call system_clock(c0, rate)
-        call monte_carlo_v4(sampler, scene, 0.5_qp, 0.05_qp, v4, counts, stat, msg)
+        call monte_carlo_v4(scene, 0.5_qp, 0.05_qp, 12, 1, v4, e, counts, stat, msg)
         call system_clock(c1)
-        call sampler%release()
         write (unit, "(a, f0.3, a)") "c2.monte_carlo_seconds_1e6"//tab, &
-            real(c1 - c0)/real(rate), tab//"s"//tab//"10^6 samples in real(16), one core; "// &
-            "target 2 s"
+            real(c1 - c0)/real(rate), tab//"s"//tab//"10^6 samples in real(16), lean path, " &
+            //"the threads OpenMP gives (OMP_NUM_THREADS)"
     end subroutine time_monte_carlo
 
     !> The cost of each method of c12-methods on the same scenes, copied from
@@ -149,6 +157,97 @@ contains
         end do
         close (u)
     end subroutine method_costs
+
+    !> Wall seconds of a command run by the shell (its output discarded).
+    function wall_seconds(command) result(seconds)
+        character(len=*), intent(in) :: command
+        real(qp) :: seconds
+        integer(int64) :: c0, c1, rate
+        integer :: exitstat, cmdstat
+        call system_clock(c0, rate)
+        call execute_command_line(command//" > /dev/null 2>&1", exitstat=exitstat, &
+            cmdstat=cmdstat)
+        call system_clock(c1)
+        if (cmdstat /= 0 .or. exitstat /= 0) call fail("bench: the command '"//command &
+            //"' failed")
+        seconds = real(c1 - c0, qp)/real(rate, qp)
+    end function wall_seconds
+
+    !> Two commands timed in turn, A B A B ..., `pairs` times; the medians of
+    !> A, of B and of the ratios A/B pair by pair (pairing keeps the ratio
+    !> meaningful when the machine's speed drifts).
+    subroutine in_turn(command_a, command_b, median_a, median_b, median_ratio)
+        character(len=*), intent(in) :: command_a, command_b
+        real(qp), intent(out) :: median_a, median_b, median_ratio
+        real(dp) :: a(pairs), b(pairs)
+        integer :: j
+        do j = 1, pairs
+            a(j) = real(wall_seconds(command_a), dp)
+            b(j) = real(wall_seconds(command_b), dp)
+        end do
+        median_a = median(a)
+        median_b = median(b)
+        median_ratio = median(a/b)
+    end subroutine in_turn
+
+    !> c12-c2 with its defaults on one thread against the minimal real(16)
+    !> loop of the same job (c12-minimal-loop), side by side; and c2 and the
+    !> sweeps of b1 and c12-methods on one thread against two.
+    subroutine side_by_side()
+        character(len=:), allocatable :: runs, one, two
+        real(qp) :: ta, tb, ratio
+        integer :: k
+        character(len=*), parameter :: sweeps(3) = [character(len=12) :: "c12-c2", "c12-b1", &
+            "c12-methods"]
+        runs = "build/bench-runs"
+        one = "OMP_NUM_THREADS=1 "
+        two = "OMP_NUM_THREADS=2 "
+        call execute_command_line("mkdir -p "//runs)
+        call in_turn(one//bin//"/c12-c2 out="//runs, one//bin//"/c12-minimal-loop", ta, tb, &
+            ratio)
+        write (unit, "(a)") "c2.seconds_one_thread"//tab//real_str(ta, 4)//tab//"s"//tab// &
+            "c12-c2 with its defaults (10^6 runs, lean path), OMP_NUM_THREADS=1, median of " &
+            //itoa(pairs)
+        write (unit, "(a)") "c2.minimal_loop_seconds"//tab//real_str(tb, 4)//tab//"s"//tab// &
+            "c12-minimal-loop (the same 10^6 runs, minimal real(16) loop), in turn with c12-c2"
+        write (unit, "(a)") "c2.ratio_to_minimal_loop"//tab//real_str(ratio, 4)//tab//"1"// &
+            tab//"median of c12-c2 / c12-minimal-loop, pair by pair; target at most 1.2"
+        do k = 1, size(sweeps)
+            call in_turn(one//bin//"/"//trim(sweeps(k))//" out="//runs, &
+                two//bin//"/"//trim(sweeps(k))//" out="//runs, ta, tb, ratio)
+            write (unit, "(a)") "openmp."//trim(sweeps(k))//".speedup_two_threads"//tab// &
+                real_str(ratio, 3)//tab//"1"//tab//"median of wall(1 thread)/wall(2 threads)" &
+                //" pair by pair, "//real_str(ta, 3)//" s and "//real_str(tb, 3)//" s; " &
+                //itoa(cores())//" processors online"
+        end do
+    end subroutine side_by_side
+
+    !> The last counts of `make callgrind` (callgrind.tsv), copied.
+    subroutine callgrind_counts()
+        character(len=4000) :: line
+        integer :: u, ios
+        open (newunit=u, file=out//"/callgrind.tsv", status="old", action="read", iostat=ios)
+        if (ios /= 0) return
+        read (u, "(a)", iostat=ios) line
+        do
+            read (u, "(a)", iostat=ios) line
+            if (ios /= 0) exit
+            write (unit, "(a)") "callgrind."//trim(line)
+        end do
+        close (u)
+    end subroutine callgrind_counts
+
+    !> Processors online (getconf), 0 if unknown.
+    integer function cores()
+        integer :: u, ios
+        cores = 0
+        call execute_command_line("getconf _NPROCESSORS_ONLN > build/bench-runs/cores 2>&1")
+        open (newunit=u, file="build/bench-runs/cores", status="old", action="read", iostat=ios)
+        if (ios /= 0) return
+        read (u, *, iostat=ios) cores
+        if (ios /= 0) cores = 0
+        close (u)
+    end function cores
 
     !> Wall time of one study program as recorded by the Makefile.
     subroutine study_time(program, total)

@@ -7,20 +7,24 @@
 !> One stream of nmax samples is drawn; the main answers are the statistics of
 !> its first n samples and the convergence table takes the prefixes
 !> N = 10^2, 10^3, ... of the same stream, so its row N = n is the main
-!> answer. For the definition's row every answer is checked against the exact
+!> answer. The stream is made of blocks of 10^4 samples, each from its own
+!> generator (see monte_carlo_v4), run in parallel with OpenMP where built
+!> with it: the output is the same for any number of threads.
+!>
+!> For the definition's row every answer is checked against the exact
 !> law of v4 = v0 ((1+e)/2)^3, valid where sphere 4 is struck once; the bound
 !> of that region is found with the engine and the samples below it counted.
 program c12_c2
-    use, intrinsic :: iso_fortran_env, only: output_unit, int64
-    use sphere_row, only: dp, qp, scene_t, run_t, simulate, str, real_str, status_normal, &
-        itoa
-    use sphere_row_monte_carlo, only: normal_sampler_t, mc_counts_t, monte_carlo_v4, &
+    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit, int64
+    use sphere_row, only: dp, qp, scene_t, run_t, simulate, str, real_str, itoa
+    use sphere_row_monte_carlo, only: mc_counts_t, monte_carlo_v4, &
         normal_mass_outside_unit, normal_cdf, normal_density, sample_moments, normal_quantile, &
         mean_ci_half_width, sort_values, sorted_quantile, ks_distance, cubic_law_applies, &
         cubic_law_mean, cubic_law_sd, cubic_law_quantile, cubic_law_cdf, cubic_law_density, &
         cubic_law_v4, single_impact_bound, min_acceptance
     use sphere_row_study_cli, only: cli_t, add_scene_keys, start_program, read_keys, fail, &
         stop_unless_normal
+    use sphere_row_terminal, only: stderr_is_terminal
     implicit none
 
     character(len=*), parameter :: name = "c12-c2"
@@ -32,8 +36,12 @@ program c12_c2
     integer, parameter :: bins_most = 100000
     !> Rows of the empirical distribution function table (every k-th order statistic).
     integer, parameter :: ecdf_rows = 1000
-    !> Sampled e re-run to compare the engine with the closed form in real128.
-    integer, parameter :: closed_form_reruns = 1000
+    !> Sampled e re-run to compare the engine with the closed form in real128,
+    !> and stored v4 compared with the closed form rounded to a double.
+    integer, parameter :: closed_form_reruns = 1000, closed_form_checks = 100000
+    !> Progress on a terminal: from this many seconds on, at most once per
+    !> report_every seconds.
+    real(dp), parameter :: report_after = 2.0_dp, report_every = 1.0_dp
     real(qp), parameter :: confidence = 0.95_qp
     !> Asymptotic 95 % quantile of the Kolmogorov distribution: a sample of the
     !> law itself exceeds ks_95/sqrt(n) with probability 5 %.
@@ -47,20 +55,21 @@ program c12_c2
     character(len=300) :: msg
     logical :: exact
     type(scene_t) :: scene
-    type(normal_sampler_t) :: sampler
     type(mc_counts_t) :: counts, counts_rest
-    integer :: stat, i, n, nmax, seed, bins
+    integer :: stat, n, nmax, seed, bins
     real(qp) :: mean, sd
     real(dp), allocatable :: v4(:), e(:), work(:)
-    integer(int64) :: clock0, clock1, clock_rate
+    integer(int64) :: clock0, clock1, clock_rate, clock_shown
     real(dp) :: seconds
+    logical :: terminal, shown
 
-    ! the answers of the main sample
-    real(qp) :: v_mean, v_sd, half_width, z975, e_mean, e_sd
+    ! the answers of the main sample (statistics in double: see sample_moments)
+    real(dp) :: v_mean, v_sd, e_mean, e_sd
+    real(qp) :: half_width, z975
     real(dp) :: q025, q975, ks
     ! checks against the exact law (definition's row only)
     real(qp) :: bound, max_diff, redraws_expected, outside_expected
-    integer :: outside, reruns, mismatches
+    integer :: outside, reruns, mismatches, checks
 
     call define_keys()
     call read_keys(cli, scene)
@@ -76,18 +85,20 @@ program c12_c2
 
     ! the stream: first the main sample, then its continuation up to nmax
     allocate (v4(nmax), e(nmax))
-    call sampler%seed(seed, stat, msg)
-    call stop_unless_normal(stat, msg)
+    terminal = stderr_is_terminal()
+    shown = .false.
     call system_clock(clock0, clock_rate)
-    call monte_carlo_v4(sampler, scene, mean, sd, v4(:n), counts, stat, msg, e(:n))
+    clock_shown = clock0
+    call monte_carlo_v4(scene, mean, sd, seed, 1, v4(:n), e(:n), counts, stat, msg, &
+        progress=show_progress)
     call stop_unless_normal(stat, msg)
     if (nmax > n) then
-        call monte_carlo_v4(sampler, scene, mean, sd, v4(n + 1:), counts_rest, stat, msg, &
-            e(n + 1:))
+        call monte_carlo_v4(scene, mean, sd, seed, n + 1, v4(n + 1:), e(n + 1:), counts_rest, &
+            stat, msg, progress=show_progress)
         call stop_unless_normal(stat, msg)
     end if
     call system_clock(clock1)
-    call sampler%release()
+    if (shown) write (error_unit, "(a)") ""
     seconds = real(clock1 - clock0, dp)/real(clock_rate, dp)
 
     ! main answers from the first n samples
@@ -95,7 +106,7 @@ program c12_c2
     call sample_moments(v4(:n), v_mean, v_sd)
     call sample_moments(e(:n), e_mean, e_sd)
     z975 = normal_quantile(0.5_qp + confidence/2)
-    half_width = mean_ci_half_width(v_sd, n, confidence)
+    half_width = mean_ci_half_width(real(v_sd, qp), n, confidence)
     work(:n) = v4(:n)
     call sort_values(work(:n))
     q025 = sorted_quantile(work(:n), 0.025_dp)
@@ -112,6 +123,22 @@ program c12_c2
         //" s ("//fixed(1.0e6_dp*seconds/nmax)//" us per run); tables in "//out
 
 contains
+
+    !> On a terminal, after report_after seconds: the share of the runs done,
+    !> on one line of stderr rewritten in place.
+    subroutine show_progress(done, total)
+        integer(int64), intent(in) :: done, total
+        integer(int64) :: now
+        if (.not. terminal) return
+        call system_clock(now)
+        if (real(now - clock0, dp) < report_after*clock_rate) return
+        if (real(now - clock_shown, dp) < report_every*clock_rate .and. done < total) return
+        clock_shown = now
+        shown = .true.
+        write (error_unit, "(a, i0, a, i0, a)", advance="no") achar(13)//name//": ", &
+            (100*done)/total, " % of ", total, " runs"
+        flush (error_unit)
+    end subroutine show_progress
 
     !> Refuse settings outside their ranges before any work is done.
     !> The keys of c2: the sample, the law of e, the histogram, and the scene
@@ -145,8 +172,9 @@ contains
 
     !> Where the exact law applies: the bound of the region of one impact on
     !> sphere 4 (bisection with the engine), the samples below it, the engine
-    !> against v0 ((1+e)/2)^3 in real128 on a subset re-run, and every stored
-    !> v4 against the closed form rounded to a double.
+    !> against v0 ((1+e)/2)^3 in real128 on a subset re-run, and the stored v4
+    !> of every (n/closed_form_checks)-th sample against the closed form rounded
+    !> to a double (a subsample: in real128 each check costs a tenth of a run).
     subroutine check_closed_form()
         type(scene_t) :: trial
         type(run_t) :: run
@@ -181,7 +209,9 @@ contains
         end do
 
         mismatches = 0
-        do i = 1, n
+        checks = 0
+        do i = max(1, n/closed_form_checks), n, max(1, n/closed_form_checks)
+            checks = checks + 1
             e_q = real(e(i), qp)
             if (e_q < bound) cycle
             if (v4(i) /= real(cubic_law_v4(e_q, scene%v0), dp)) mismatches = mismatches + 1
@@ -238,11 +268,11 @@ contains
             //" runs n+1..nmax continue the same stream.")
         call answer(unit, "c2.seed", itoa(seed), "Seed of GSL's MT19937 whose uniforms" &
             //" give e by Box-Muller (both normals of each pair used).")
-        call answer(unit, "c2.e_mean", str(e_mean), "Mean of the sampled e (doubles" &
-            //" summed in real128)", "normal_mean", e_mean, mean, &
+        call answer(unit, "c2.e_mean", dstr(e_mean), "Mean of the sampled e (shifted sums" &
+            //" in double)", "normal_mean", real(e_mean, qp), mean, &
             ", against the mean of the normal law.")
-        call answer(unit, "c2.e_sd", str(e_sd), "Standard deviation of the sampled e", &
-            "normal_sd", e_sd, sd, ", against that of the normal law.")
+        call answer(unit, "c2.e_sd", dstr(e_sd), "Standard deviation of the sampled e", &
+            "normal_sd", real(e_sd, qp), sd, ", against that of the normal law.")
         call answer(unit, "c2.redraws", itoa(counts%redraws), "Normal draws outside" &
             //" 0 <= e <= 1, discarded and drawn again (the law is truncated to [0,1])", &
             "expected_count", real(counts%redraws, qp), redraws_expected, &
@@ -251,6 +281,8 @@ contains
             //" sample that ended in the quasi-plastic case (collapse limit taken).")
         call answer(unit, "c2.incomplete", itoa(counts%incomplete), "Runs of the main" &
             //" sample stopped by max_collisions before their end.")
+        call answer(unit, "c2.collisions", itoa(counts%collisions), "Binary collisions of" &
+            //" the runs of the main sample, all together.")
         if (exact) then
             call answer(unit, "c2.region_e_min", str(bound), "Smallest e above which" &
                 //" sphere 4 is struck once, so that v4 = v0((1+e)/2)^3, by bisection on" &
@@ -265,14 +297,18 @@ contains
                 //" the next row.")
             call answer(unit, "c2.closed_form_max_diff", str(max_diff), "Largest" &
                 //" |v4 - v0((1+e)/2)^3| over those re-runs, both in real128.")
+            call answer(unit, "c2.closed_form_checks", itoa(checks), "Samples (every" &
+                //" n/"//itoa(closed_form_checks)//"-th of the main sample) whose stored" &
+                //" v4 is compared with the closed form in the next row.")
             call answer(unit, "c2.closed_form_mismatches", itoa(mismatches), "Stored v4" &
-                //" (doubles) of the main sample inside the region that differ from the" &
+                //" (doubles) of those samples inside the region that differ from the" &
                 //" closed form rounded to a double.")
         end if
-        call answer(unit, "c2.mean", str(v_mean), "Sample mean of v4 summed in real128", &
-            "closed_form", v_mean, m_exact, ", against v0((1+m)^3+3(1+m)s^2)/8.")
-        call answer(unit, "c2.sd", str(v_sd), "Sample standard deviation (divisor n-1)" &
-            //" in real128", "closed_form", v_sd, s_exact, ", against" &
+        call answer(unit, "c2.mean", dstr(v_mean), "Sample mean of v4 (shifted sums in" &
+            //" double, good to 1e-11 of sd)", "closed_form", real(v_mean, qp), m_exact, &
+            ", against v0((1+m)^3+3(1+m)s^2)/8.")
+        call answer(unit, "c2.sd", dstr(v_sd), "Sample standard deviation (divisor n-1)" &
+            //" in double", "closed_form", real(v_sd, qp), s_exact, ", against" &
             //" v0 sqrt(9u^4s^2+36u^2s^4+15s^6)/8, u = 1+m.")
         call answer(unit, "c2.z975", str(z975), "Normal quantile z_0.975 from GSL's" &
             //" gsl_cdf_ugaussian_Pinv, used for the interval of the mean (n >= 100).")
@@ -285,7 +321,7 @@ contains
         call answer(unit, "c2.mean_ci_high", str(v_mean + half_width), "Upper end of the" &
             //" 95 % interval of the mean", "closed_form_mean", v_mean + half_width, m_exact, &
             "; a positive difference means the exact mean lies below it.")
-        call answer(unit, "c2.q025", dstr(q025), "2.5 % quantile of v4 by gsl_sort and" &
+        call answer(unit, "c2.q025", dstr(q025), "2.5 % quantile of v4 by a radix sort and" &
             //" gsl_stats_quantile_from_sorted_data", "closed_form", real(q025, qp), &
             cubic_law_quantile(0.025_qp, mean, sd, scene%v0), &
             ", against v0((1+m+s z_0.025)/2)^3.")
@@ -340,8 +376,8 @@ contains
             exact_text = "-"
             if (exact) exact_text = dstr(cubic_law_cdf(work(i), mean, sd, scene%v0))
             write (unit, "(a)") itoa(i)//tab//dstr(work(i))//tab &
-                //dstr(real(i, dp)/real(n, dp))//tab//dstr(normal_cdf(work(i), v_mean, v_sd)) &
-                //tab//exact_text
+                //dstr(real(i, dp)/real(n, dp))//tab &
+                //dstr(normal_cdf(work(i), real(v_mean, qp), real(v_sd, qp)))//tab//exact_text
         end do
     end subroutine write_ecdf
 
@@ -380,7 +416,8 @@ contains
             exact_text = "-"
             if (exact) exact_text = dstr(cubic_law_density(centre, mean, sd, scene%v0))
             write (unit, "(a)") dstr(centre)//tab//itoa(hits(j))//tab//dstr(density)//tab &
-                //exact_text//tab//dstr(normal_density(centre, v_mean, v_sd))
+                //exact_text//tab//dstr(normal_density(centre, real(v_mean, qp), &
+                real(v_sd, qp)))
         end do
     end subroutine write_histogram
 
@@ -391,7 +428,8 @@ contains
         integer, intent(in) :: unit
         integer, allocatable :: sizes(:)
         integer :: j, m
-        real(qp) :: p_mean, p_sd, p_half, m_exact
+        real(dp) :: p_mean, p_sd
+        real(qp) :: p_half, m_exact
         real(dp) :: p_q025, p_q975
         character(len=:), allocatable :: exact_text
         write (unit, "(a)") "n[1]"//tab//"mean[V]"//tab//"sd[V]"//tab//"ci_half_width[V]" &
@@ -423,10 +461,10 @@ contains
                 p_q025 = sorted_quantile(work(:m), 0.025_dp)
                 p_q975 = sorted_quantile(work(:m), 0.975_dp)
             end if
-            p_half = mean_ci_half_width(p_sd, m, confidence)
+            p_half = mean_ci_half_width(real(p_sd, qp), m, confidence)
             exact_text = "-"
             if (exact) exact_text = str(p_mean - m_exact)
-            write (unit, "(a)") itoa(m)//tab//str(p_mean)//tab//str(p_sd)//tab//str(p_half) &
+            write (unit, "(a)") itoa(m)//tab//dstr(p_mean)//tab//dstr(p_sd)//tab//str(p_half) &
                 //tab//str(p_half*sqrt(real(m, qp)))//tab//dstr(p_q025)//tab//dstr(p_q975) &
                 //tab//exact_text
         end do

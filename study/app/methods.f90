@@ -189,14 +189,21 @@ contains
 
     !> methods_stability.tsv: the category of each method on the map over e,
     !> from 1 down through e_c to 0, log-spaced in |e - e_c| from 1e-7 on.
+    !> The values of e are independent: they run in parallel (OpenMP), each
+    !> thread on its own copy of the methods, and the rows are written in
+    !> order afterwards, so the table does not depend on the threads.
     subroutine stability()
         !> One point in this many lies below e_c.
         integer, parameter :: below_part = 4
         type(outcome_t) :: ref, run
         type(scene_t) :: scene
+        type(method_t), allocatable :: mine(:)
         real(qp), allocatable :: es(:)
         real(qp) :: lo, hi
-        integer :: n_above, n_below, j, m, unit, row, category
+        integer :: n_above, n_below, j, m, unit, row
+        ! per value of e and method: category, collisions, status; and the reference's
+        integer, allocatable :: category(:, :), n_run(:, :), status_run(:, :)
+        integer, allocatable :: n_ref(:), status_ref(:)
         n_below = points/below_part
         n_above = points - n_below
         allocate (es(points))
@@ -216,20 +223,35 @@ contains
         write (unit, "(a)") "row"//tab//"label"//tab//"e[1]"//tab//"e_minus_ec[1]"//tab &
             //"category_code"//tab//"category"//tab//"collisions"//tab//"collisions_ref"//tab &
             //"status"//tab//"status_ref"
+        allocate (category(size(methods), points), n_run(size(methods), points), &
+            status_run(size(methods), points), n_ref(points), status_ref(points))
+        !$omp parallel do schedule(dynamic) default(shared) private(j, m, scene, ref, run, mine)
         do j = 1, points
+            if (.not. allocated(mine)) mine = methods
             call scene_at(es(j), scene)
             call reference_run(scene, ref)
+            n_ref(j) = ref%n
+            status_ref(j) = ref%status
+            do m = 1, size(mine)
+                if (.not. in_map(m)) cycle
+                call prepare(mine(m), scene)
+                call method_run(mine(m), run, record=.true.)
+                category(m, j) = classify(ref, run, method_v_tol(mine(m), scene%v0))
+                n_run(m, j) = run%n
+                status_run(m, j) = run%status
+            end do
+        end do
+        !$omp end parallel do
+        do j = 1, points
             row = 0
             do m = 1, size(methods)
                 if (.not. in_map(m)) cycle
                 row = row + 1
-                call prepare(methods(m), scene)
-                call method_run(methods(m), run, record=.true.)
-                category = classify(ref, run, method_v_tol(methods(m), scene%v0))
                 write (unit, "(a)") itoa(row)//tab//method_label(methods(m))//tab//str(es(j)) &
-                    //tab//str(es(j) - e_crit)//tab//itoa(category)//tab &
-                    //category_word(category)//tab//itoa(run%n)//tab//itoa(ref%n)//tab &
-                    //status_word(run%status)//tab//status_word(ref%status)
+                    //tab//str(es(j) - e_crit)//tab//itoa(category(m, j))//tab &
+                    //category_word(category(m, j))//tab//itoa(n_run(m, j))//tab &
+                    //itoa(n_ref(j))//tab//status_word(status_run(m, j))//tab &
+                    //status_word(status_ref(j))
             end do
         end do
         close (unit)

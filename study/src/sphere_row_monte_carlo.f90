@@ -3,10 +3,11 @@
 !>
 !> e is drawn from a normal law by the Box–Muller transform of MT19937
 !> uniforms from GSL, as a double; each draw is converted exactly to real128
-!> and the row is run in real128. The final velocity of the last sphere is
-!> kept as a double: the statistics have widths of order 1e-4 of v0, so digits
-!> beyond a double's carry no information, while the sums over samples are
-!> accumulated in real128 so that their rounding never competes with that.
+!> and the row is run in real128 (the lean path of sphere_row_lean where the
+!> scene allows). The final velocity of the last sphere is kept as a double:
+!> the statistics have widths of order 1e-4 of v0, so digits beyond a double's
+!> carry no information; for the same reason the statistics themselves (sums,
+!> sort) are taken in double, off the critical path (see sample_moments).
 !>
 !> The library never stops: refusals come back as status_invalid and a
 !> one-line message naming the input, its value and what is allowed.
@@ -16,12 +17,15 @@ module sphere_row_monte_carlo
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
     use sphere_row, only: dp, qp, scene_t, run_t, event_log_t, scene_check, simulate, &
         status_normal, status_collapsed, status_invalid, event_collision, str, real_str
+    use sphere_row_lean, only: lean_row_t
+    use sphere_row_sorting, only: radix_sort
     use sphere_row_gsl, only: gsl_rng_mt19937, gsl_rng_alloc, gsl_rng_set, gsl_rng_uniform_pos, &
-        gsl_rng_free, gsl_sort, gsl_stats_quantile_from_sorted_data, gsl_cdf_ugaussian_p, &
+        gsl_rng_free, gsl_stats_quantile_from_sorted_data, gsl_cdf_ugaussian_p, &
         gsl_cdf_ugaussian_pinv
     implicit none
     private
-    public :: normal_sampler_t, mc_counts_t, min_acceptance
+    public :: normal_sampler_t, mc_counts_t, min_acceptance, mc_block_size, progress_report
+    public :: mc_block_seed
     public :: monte_carlo_v4, normal_mass_outside_unit, normal_cdf, normal_density
     public :: sample_moments, normal_quantile, mean_ci_half_width, sort_values, sorted_quantile
     public :: ks_distance
@@ -32,6 +36,10 @@ module sphere_row_monte_carlo
     !> are drawn again, so a smaller share would multiply the cost (by up to
     !> 1/min_acceptance) and describe a law that is mostly cut away.
     real(dp), parameter :: min_acceptance = 0.1_dp
+    !> Samples per block of the Monte Carlo stream, each block with its own
+    !> generator (see monte_carlo_v4): large against the generator's seeding
+    !> (624 words), small enough to share out 10^6 samples among many threads.
+    integer, parameter :: mc_block_size = 10000
 
     ! 2 pi and 1/sqrt(2 pi), to more digits than a double holds
     real(dp), parameter :: two_pi = 6.283185307179586476925286766559005768_dp
@@ -52,6 +60,8 @@ module sphere_row_monte_carlo
     contains
         !> Create the generator if needed and (re)start its stream from a seed.
         procedure :: seed => sampler_seed
+        !> The same for a block's seed in 1 .. 2^32-1 (see mc_block_seed).
+        procedure :: seed_block => sampler_seed_block
         !> Next standard normal variate.
         procedure :: draw => sampler_draw
         !> Free the generator.
@@ -66,12 +76,22 @@ module sphere_row_monte_carlo
         integer(int64) :: runs = 0
         !> Normal draws outside [0, 1] that were discarded and drawn again.
         integer(int64) :: redraws = 0
+        !> Binary collisions of all runs (the engine's run%n summed).
+        integer(int64) :: collisions = 0
         !> Runs that ended in the quasi-plastic case (status_collapsed).
         integer(int64) :: collapsed = 0
         !> Runs stopped by the scene's max_collisions (v4 is then the value
         !> after the last collision computed); expected 0.
         integer(int64) :: incomplete = 0
     end type mc_counts_t
+
+    abstract interface
+        !> Told after each block of a Monte Carlo: `done` of `total` samples.
+        subroutine progress_report(done, total)
+            import :: int64
+            integer(int64), intent(in) :: done, total
+        end subroutine progress_report
+    end interface
 
 contains
 
@@ -98,6 +118,17 @@ contains
         stat = status_normal
         msg = ""
     end subroutine sampler_seed
+
+    !> Create the generator if needed and start its stream from a block's seed
+    !> (1 <= seed < 2^32, as block_seed gives; no memory leaves it unseeded).
+    subroutine sampler_seed_block(self, seed)
+        class(normal_sampler_t), intent(inout) :: self
+        integer(int64), intent(in) :: seed
+        if (.not. c_associated(self%rng)) self%rng = gsl_rng_alloc(gsl_rng_mt19937)
+        if (.not. c_associated(self%rng)) return
+        call gsl_rng_set(self%rng, int(seed, c_long))
+        self%have_spare = .false.
+    end subroutine sampler_seed_block
 
     !> Next standard normal variate; NaN if the sampler was never seeded.
     subroutine sampler_draw(self, z)
@@ -162,39 +193,57 @@ contains
         f = inv_sqrt_two_pi*exp(-0.5_dp*z*z)/real(sd, dp)
     end function normal_density
 
-    !> Run the row once per element of `v4`, with e drawn from N(mean, sd^2)
-    !> truncated to [0, 1], and store the final velocity of the last sphere.
+    !> Samples i = first, ..., first+size(v4)-1 of the stream of `seed`: for
+    !> each, e drawn from N(mean, sd^2) truncated to [0, 1], the row run once
+    !> in real128 and the final velocity of its last sphere stored (as a
+    !> double); `e_samples` gets the e (doubles, exact in real128).
+    !>
+    !> The stream is cut into blocks of mc_block_size samples; block b
+    !> (samples (b-1) B + 1 ... b B) draws its own normals, by Box-Muller, from
+    !> its own MT19937 generator seeded with mc_block_seed(seed, b). So sample i
+    !> depends on (seed, i) alone: blocks run in parallel (OpenMP, any number
+    !> of threads, or none) give the same samples, and the first n samples do
+    !> not depend on how many follow. A block that starts before `first` draws
+    !> its earlier e without running them.
     !>
     !> Rule for draws outside [0, 1], the range the definition allows for e:
     !> they are discarded and drawn again (counted in `counts%redraws`), so the
-    !> law sampled is the normal truncated to [0, 1]. The draws come from
-    !> `sampler`, which the caller seeds; successive calls continue its stream,
-    !> so one stream can be cut into pieces with identical results.
+    !> law sampled is the normal truncated to [0, 1]. Each e is drawn as a
+    !> double, `mean + sd*z` evaluated in double, and converted exactly to
+    !> real128 for the run.
     !>
-    !> Each e is drawn as a double, `mean + sd*z` evaluated in double, and
-    !> converted exactly to real128 for the run; `e_samples`, if present, gets
-    !> the doubles. Nothing is allocated per sample.
-    subroutine monte_carlo_v4(sampler, scene, mean, sd, v4, counts, stat, msg, e_samples)
-        type(normal_sampler_t), intent(inout) :: sampler
+    !> The runs take the lean path of sphere_row_lean (the engine's v4, bit for
+    !> bit, at a fraction of its cost) where the scene is of its family, unless
+    !> `lean` is false; otherwise the engine. `progress`, if present, is called
+    !> (by one thread at a time) after each block with the samples done.
+    subroutine monte_carlo_v4(scene, mean, sd, seed, first, v4, e_samples, counts, stat, msg, &
+        lean, progress)
         type(scene_t), intent(in) :: scene
         real(qp), intent(in) :: mean, sd
-        real(dp), intent(out) :: v4(:)
+        integer, intent(in) :: seed, first
+        real(dp), intent(out) :: v4(:), e_samples(:)
         type(mc_counts_t), intent(out) :: counts
         integer, intent(out) :: stat
         character(len=*), intent(out) :: msg
-        real(dp), intent(out), optional :: e_samples(:)
-        type(scene_t) :: trial
-        type(run_t) :: run
-        real(dp) :: mean_d, sd_d, z, e
+        logical, intent(in), optional :: lean
+        procedure(progress_report), optional :: progress
+        type(mc_counts_t), allocatable :: block_counts(:)
+        type(lean_row_t) :: probe
+        real(dp) :: mean_d, sd_d
         real(dp) :: mass
-        integer :: i
+        integer(int64) :: done, total
+        integer :: b, b_first, b_last, last
+        logical :: use_lean, report
 
         call scene_check(scene, stat, msg)
         if (stat /= status_normal) return
         stat = status_invalid
-        if (.not. sampler%seeded()) then
-            ! its draws would be NaN, and the redraw loop would never end
-            msg = "sampler: not seeded; allowed only after its seed(...)"
+        if (seed < 1) then
+            write (msg, "(a, i0, a)") "seed = ", seed, ": allowed an integer >= 1"
+            return
+        end if
+        if (first < 1) then
+            write (msg, "(a, i0, a)") "first = ", first, ": allowed an integer >= 1"
             return
         end if
         if (.not. (abs(mean) <= huge(1.0_dp))) then
@@ -211,39 +260,102 @@ contains
                 //short(real(mass, qp))//" of the law lies in 0 <= e <= 1; allowed at least 0.1"
             return
         end if
-        if (present(e_samples)) then
-            if (size(e_samples) /= size(v4)) then
-                write (msg, "(a, i0, a, i0)") "e_samples: size ", size(e_samples), &
-                    ": allowed the size of v4, ", size(v4)
-                return
-            end if
+        if (size(e_samples) /= size(v4)) then
+            write (msg, "(a, i0, a, i0)") "e_samples: size ", size(e_samples), &
+                ": allowed the size of v4, ", size(v4)
+            return
         end if
         stat = status_normal
         msg = ""
+        if (size(v4) == 0) return
 
-        trial = scene
+        use_lean = .true.
+        if (present(lean)) use_lean = lean
+        if (use_lean) then
+            call probe%prepare(scene, stat, msg)
+            use_lean = stat == status_normal
+            stat = status_normal
+            msg = ""
+        end if
+        report = present(progress)
         mean_d = real(mean, dp)
         sd_d = real(sd, dp)
-        do i = 1, size(v4)
-            do
-                call sampler%draw(z)
-                e = mean_d + sd_d*z
-                if (e >= 0.0_dp .and. e <= 1.0_dp) exit
-                counts%redraws = counts%redraws + 1
-            end do
-            if (present(e_samples)) e_samples(i) = e
-            trial%e = real(e, qp)
-            call simulate(trial, run)
-            if (run%status == status_collapsed) then
-                counts%collapsed = counts%collapsed + 1
-            else if (run%status /= status_normal) then
-                counts%incomplete = counts%incomplete + 1
+        last = first + size(v4) - 1
+        b_first = (first - 1)/mc_block_size + 1
+        b_last = (last - 1)/mc_block_size + 1
+        allocate (block_counts(b_first:b_last))
+        done = 0
+        total = size(v4)
+        !$omp parallel do schedule(dynamic, 1) default(shared) private(b)
+        do b = b_first, b_last
+            call run_block(b, block_counts(b))
+            if (report) then
+                !$omp critical (mc_progress)
+                done = done + block_counts(b)%runs
+                call progress(done, total)
+                !$omp end critical (mc_progress)
             end if
-            v4(i) = real(run%v(trial%p), dp)
         end do
-        counts%runs = size(v4)
+        !$omp end parallel do
+        do b = b_first, b_last
+            counts%runs = counts%runs + block_counts(b)%runs
+            counts%redraws = counts%redraws + block_counts(b)%redraws
+            counts%collapsed = counts%collapsed + block_counts(b)%collapsed
+            counts%incomplete = counts%incomplete + block_counts(b)%incomplete
+            counts%collisions = counts%collisions + block_counts(b)%collisions
+        end do
 
     contains
+
+        !> The samples of block b that lie in first..last, with their counts;
+        !> everything it changes is its own (locals) or its own slice of v4
+        !> and e_samples.
+        subroutine run_block(b, block)
+            integer, intent(in) :: b
+            type(mc_counts_t), intent(out) :: block
+            type(normal_sampler_t) :: sampler
+            type(lean_row_t) :: lean_row
+            type(scene_t) :: trial
+            type(run_t) :: run
+            real(qp) :: v4_q
+            real(dp) :: z, e
+            integer :: i, i_lo, i_hi, status, block_stat, n
+            logical :: deferred
+            character(len=80) :: block_msg
+            i_lo = max((b - 1)*mc_block_size + 1, first)
+            i_hi = min(b*mc_block_size, last)
+            call sampler%seed_block(mc_block_seed(seed, b))
+            if (use_lean) call lean_row%prepare(scene, block_stat, block_msg)
+            trial = scene
+            do i = (b - 1)*mc_block_size + 1, i_hi
+                do
+                    call sampler%draw(z)
+                    e = mean_d + sd_d*z
+                    if (e >= 0.0_dp .and. e <= 1.0_dp) exit
+                    if (i >= i_lo) block%redraws = block%redraws + 1
+                end do
+                if (i < i_lo) cycle
+                e_samples(i - first + 1) = e
+                if (use_lean) then
+                    call lean_row%v4(real(e, qp), v4_q, status, deferred, n)
+                else
+                    trial%e = real(e, qp)
+                    call simulate(trial, run)
+                    v4_q = run%v(trial%p)
+                    status = run%status
+                    n = run%n
+                end if
+                block%collisions = block%collisions + n
+                if (status == status_collapsed) then
+                    block%collapsed = block%collapsed + 1
+                else if (status /= status_normal) then
+                    block%incomplete = block%incomplete + 1
+                end if
+                v4(i - first + 1) = real(v4_q, dp)
+            end do
+            block%runs = i_hi - i_lo + 1
+            call sampler%release()
+        end subroutine run_block
 
         !> Six significant digits are enough to name a value in a message.
         pure function short(x) result(s)
@@ -254,29 +366,54 @@ contains
 
     end subroutine monte_carlo_v4
 
-    !> Sample mean and standard deviation (divisor n-1; 0 for one value),
-    !> summed in real128 in two passes so that neither rounding nor the
-    !> cancellation of a one-pass formula reaches the digits printed.
+    !> The MT19937 seed of block b of the stream of `seed`:
+    !> 1 + (seed k1 + (b-1) k2) mod (2^32 - 1), with k1, k2 prime to 2^32 - 1,
+    !> so that the blocks of one stream have distinct seeds in 1 .. 2^32-1
+    !> (MT19937 reads 32 bits of its seed, and GSL takes 0 for its default).
+    pure function mc_block_seed(seed, b) result(s)
+        integer, intent(in) :: seed, b
+        integer(int64) :: s
+        integer(int64), parameter :: modulus = 4294967295_int64
+        integer(int64), parameter :: k1 = 1640531527_int64, k2 = 2147483647_int64
+        s = 1 + modulo(modulo(int(seed, int64)*k1, modulus) + int(b - 1, int64)*k2, modulus)
+    end function mc_block_seed
+
+    !> Sample mean and standard deviation (divisor n-1; 0 for one value) in
+    !> double, by sums of the values shifted by the first one, added in chunks.
+    !>
+    !> Why double suffices (v4 in [0, 1], the statistics' standard errors of
+    !> order 4e-5 for 10^6 samples, 1e-5 for 10^7): the shifted sums carry
+    !> relative rounding errors of order (chunk + n/chunk) epsilon, about 1e-12,
+    !> and the shift (within a few sd of the mean) keeps the cancellation in
+    !> sum d^2 - (sum d)^2/n to a factor of about 20; so mean and sd are good to
+    !> about 1e-11 of sd, six orders below their own standard errors.
     pure subroutine sample_moments(x, mean, sd)
         real(dp), intent(in) :: x(:)
-        real(qp), intent(out) :: mean, sd
-        real(qp) :: total, deviation
-        integer :: i
-        mean = 0.0_qp
-        sd = 0.0_qp
-        if (size(x) == 0) return
-        total = 0.0_qp
-        do i = 1, size(x)
-            total = total + real(x(i), qp)
+        real(dp), intent(out) :: mean, sd
+        integer, parameter :: chunk = 4096
+        real(dp) :: shift, s1, s2, c1, c2, d
+        integer :: i, j, n
+        mean = 0.0_dp
+        sd = 0.0_dp
+        n = size(x)
+        if (n == 0) return
+        shift = x(1)
+        s1 = 0.0_dp
+        s2 = 0.0_dp
+        do j = 1, n, chunk
+            c1 = 0.0_dp
+            c2 = 0.0_dp
+            do i = j, min(n, j + chunk - 1)
+                d = x(i) - shift
+                c1 = c1 + d
+                c2 = c2 + d*d
+            end do
+            s1 = s1 + c1
+            s2 = s2 + c2
         end do
-        mean = total/size(x)
-        if (size(x) == 1) return
-        total = 0.0_qp
-        do i = 1, size(x)
-            deviation = real(x(i), qp) - mean
-            total = total + deviation*deviation
-        end do
-        sd = sqrt(total/(size(x) - 1))
+        mean = shift + s1/n
+        if (n == 1) return
+        sd = sqrt(max(0.0_dp, (s2 - s1*(s1/n))/(n - 1)))
     end subroutine sample_moments
 
     !> Standard normal quantile z_p from GSL (a double, held exactly in real128).
@@ -302,10 +439,11 @@ contains
         half_width = normal_quantile(0.5_qp + confidence/2)*sd/sqrt(real(n, qp))
     end function mean_ci_half_width
 
-    !> Sort into ascending order in place (GSL's gsl_sort).
+    !> Sort into ascending order in place: a radix sort, O(n) (10^7 values in
+    !> a fraction of a second where a heapsort takes seconds).
     subroutine sort_values(x)
         real(dp), contiguous, intent(inout) :: x(:)
-        if (size(x) > 1) call gsl_sort(x, 1_c_size_t, int(size(x), c_size_t))
+        call radix_sort(x)
     end subroutine sort_values
 
     !> Quantile of level f (0 <= f <= 1) of sorted data, GSL's definition:

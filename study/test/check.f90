@@ -5,6 +5,7 @@ program check
     use test_monte_carlo, only: collect_monte_carlo
     use test_methods, only: collect_methods
     use test_ecrit, only: collect_ecrit
+    use test_lean, only: collect_lean
     implicit none
     integer :: passed, failed
     passed = 0
@@ -13,6 +14,7 @@ program check
     call run_tests("monte_carlo", collect_monte_carlo(), passed, failed)
     call run_tests("methods", collect_methods(), passed, failed)
     call run_tests("ecrit", collect_ecrit(), passed, failed)
+    call run_tests("lean", collect_lean(), passed, failed)
     print "(i0, ' passed, ', i0, ' failed')", passed, failed
     if (failed > 0) stop 1, quiet=.true.
 end program check

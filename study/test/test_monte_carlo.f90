@@ -9,7 +9,9 @@ module test_monte_carlo
         normal_quantile, mean_ci_half_width, sort_values, sorted_quantile, ks_distance, &
         cubic_law_applies, cubic_law_mean, cubic_law_sd, cubic_law_quantile, cubic_law_cdf, &
         cubic_law_density, cubic_law_v4, single_impact_bound
+    use sphere_row_sorting, only: radix_sort, sort
     use testsuite, only: error_t, unittest_t, new_unittest, check
+    !$ use omp_lib, only: omp_set_num_threads, omp_get_max_threads
     implicit none
     private
     public :: collect_monte_carlo
@@ -42,7 +44,10 @@ contains
             new_unittest("redraw_rule_truncates", test_redraw_rule), &
             new_unittest("refuses_law_outside_unit", test_refusals), &
             new_unittest("small_mc_against_closed_form", test_small_mc), &
-            new_unittest("single_impact_bound", test_single_impact_bound) &
+            new_unittest("single_impact_bound", test_single_impact_bound), &
+            new_unittest("radix_sort_orders_doubles", test_radix_sort), &
+            new_unittest("lean_mc_equals_engine_mc", test_lean_mc), &
+            new_unittest("mc_same_for_any_threads", test_threads) &
             ]
     end function collect_monte_carlo
 
@@ -55,7 +60,8 @@ contains
         integer, parameter :: n = 100000
         type(normal_sampler_t) :: sampler
         real(dp), allocatable :: z(:)
-        real(qp) :: mean, sd, fourth, pair
+        real(dp) :: mean, sd
+        real(qp) :: fourth, pair
         integer :: i, stat
         character(len=200) :: msg
         allocate (z(n))
@@ -70,7 +76,7 @@ contains
         ! the two normals of a pair are independent: their product has mean 0, sd 1
         pair = sum(real(z(1::2), qp)*real(z(2::2), qp))/(n/2)
         call check(error, abs(mean) <= k_se/sqrt(real(n, qp)), "mean "//str(mean))
-        call check(error, abs(sd**2 - 1.0_qp) <= k_se*sqrt(2.0_qp/n), "variance "//str(sd**2))
+        call check(error, abs(sd**2 - 1.0_dp) <= k_se*sqrt(2.0_qp/n), "variance "//str(sd**2))
         call check(error, abs(fourth - 3.0_qp) <= k_se*sqrt(96.0_qp/n), &
             "fourth moment "//str(fourth))
         call check(error, abs(pair) <= k_se/sqrt(real(n/2, qp)), "pair product "//str(pair))
@@ -115,24 +121,25 @@ contains
         call sampler%release()
     end subroutine test_unseeded
 
-    !> A permutation of 1..1001: mean 501, variance n(n+1)/12 exactly; sorted
-    !> back to 1..1001; GSL's quantile of level f is 1 + f (n-1).
+    !> A permutation of 1..1001: mean 501, variance n(n+1)/12 exactly (sums of
+    !> integers shifted by the first: exact in double); sorted back to
+    !> 1..1001; GSL's quantile of level f is 1 + f (n-1).
     subroutine test_known_sample(error)
         type(error_t), allocatable, intent(out) :: error
         integer, parameter :: n = 1001
         real(dp) :: x(n)
-        real(qp) :: mean, sd, sd_exact
+        real(dp) :: mean, sd, sd_exact
         real(dp) :: f
         integer :: i, k
         ! 389 is prime to 1001 = 7 11 13, so i -> 389 i mod n permutes 0..n-1
         x = [(real(mod(389*i, n) + 1, dp), i=0, n - 1)]
         call sample_moments(x, mean, sd)
-        sd_exact = sqrt(real(n, qp)*(n + 1)/12.0_qp)
-        call check(error, abs(mean - 501.0_qp) <= 4*eps_q*501.0_qp, "mean "//str(mean))
-        call check(error, abs(sd - sd_exact) <= 16*eps_q*sd_exact, &
+        sd_exact = sqrt(real(n, dp)*(n + 1)/12.0_dp)
+        call check(error, abs(mean - 501.0_dp) <= 4*eps_d*501.0_dp, "mean "//str(mean))
+        call check(error, abs(sd - sd_exact) <= 16*eps_d*sd_exact, &
             "sd "//str(sd)//" /= "//str(sd_exact))
         call sort_values(x)
-        call check(error, all(x == [(real(i, dp), i=1, n)]), "gsl_sort did not give 1..n")
+        call check(error, all(x == [(real(i, dp), i=1, n)]), "the sort did not give 1..n")
         call check(error, sorted_quantile(x, 0.025_dp) == 26.0_dp, "q025 /= 26")
         call check(error, sorted_quantile(x, 0.975_dp) == 976.0_dp, "q975 /= 976")
         call check(error, sorted_quantile(x, 0.0_dp) == 1.0_dp .and. &
@@ -143,7 +150,7 @@ contains
                 8*eps_d*n, "interpolated quantile at f = "//str(f))
         end do
         call sample_moments(x(:1), mean, sd)
-        call check(error, mean == 1.0_qp .and. sd == 0.0_qp, "one value: mean 1, sd 0")
+        call check(error, mean == 1.0_dp .and. sd == 0.0_dp, "one value: mean 1, sd 0")
     end subroutine test_known_sample
 
     !> Order statistics at the midpoints of n equal cells of the uniform law are
@@ -240,16 +247,13 @@ contains
         type(error_t), allocatable, intent(out) :: error
         integer, parameter :: n = 1000
         type(scene_t) :: scene
-        type(normal_sampler_t) :: sampler
         type(mc_counts_t) :: counts
         real(dp) :: v4(n), e(n)
         real(qp) :: p_out, expected, se
         integer :: stat
         character(len=200) :: msg
         call scene_init(scene, stat, msg)
-        call sampler%seed(99, stat, msg)
-        call monte_carlo_v4(sampler, scene, 0.95_qp, 0.1_qp, v4, counts, stat, msg, e)
-        call sampler%release()
+        call monte_carlo_v4(scene, 0.95_qp, 0.1_qp, 99, 1, v4, e, counts, stat, msg)
         call check(error, stat == status_normal, "refused: "//trim(msg))
         p_out = real(normal_mass_outside_unit(0.95_qp, 0.1_qp), qp)
         expected = n*p_out/(1.0_qp - p_out)
@@ -262,30 +266,33 @@ contains
         call check(error, all(v4 > 0.0_dp .and. v4 <= 1.0_dp), "v4 outside (0, v0]")
     end subroutine test_redraw_rule
 
-    !> An unseeded sampler, a law with under 10 % of its mass in [0, 1],
-    !> sd <= 0 and a wrong size of e_samples are refused with a message naming
-    !> the input.
+    !> Seed 0, a start before the stream, a law with under 10 % of its mass in
+    !> [0, 1], sd <= 0 and a wrong size of e_samples are refused with a message
+    !> naming the input; a sampler is seeded until released.
     subroutine test_refusals(error)
         type(error_t), allocatable, intent(out) :: error
         type(scene_t) :: scene
         type(normal_sampler_t) :: sampler
         type(mc_counts_t) :: counts
-        real(dp) :: v4(10), e(9)
+        real(dp) :: v4(10), e(10), e_short(9)
         integer :: stat
         character(len=200) :: msg
         call scene_init(scene, stat, msg)
-        call monte_carlo_v4(sampler, scene, 0.5_qp, 0.05_qp, v4, counts, stat, msg)
-        call check(error, stat == status_invalid .and. index(msg, "sampler") > 0, &
-            "unseeded sampler not refused: "//trim(msg))
+        call monte_carlo_v4(scene, 0.5_qp, 0.05_qp, 0, 1, v4, e, counts, stat, msg)
+        call check(error, stat == status_invalid .and. index(msg, "seed = 0") > 0, &
+            "seed 0 not refused: "//trim(msg))
+        call monte_carlo_v4(scene, 0.5_qp, 0.05_qp, 1, 0, v4, e, counts, stat, msg)
+        call check(error, stat == status_invalid .and. index(msg, "first = 0") > 0, &
+            "first 0 not refused: "//trim(msg))
         call sampler%seed(1, stat, msg)
         call check(error, sampler%seeded(), "seeded sampler reports unseeded")
-        call monte_carlo_v4(sampler, scene, 5.0_qp, 0.05_qp, v4, counts, stat, msg)
+        call monte_carlo_v4(scene, 5.0_qp, 0.05_qp, 1, 1, v4, e, counts, stat, msg)
         call check(error, stat == status_invalid .and. index(msg, "mean = 5") > 0, &
             "mean 5 not refused: "//trim(msg))
-        call monte_carlo_v4(sampler, scene, 0.5_qp, 0.0_qp, v4, counts, stat, msg)
+        call monte_carlo_v4(scene, 0.5_qp, 0.0_qp, 1, 1, v4, e, counts, stat, msg)
         call check(error, stat == status_invalid .and. index(msg, "sd = 0") > 0, &
             "sd 0 not refused: "//trim(msg))
-        call monte_carlo_v4(sampler, scene, 0.5_qp, 0.05_qp, v4, counts, stat, msg, e)
+        call monte_carlo_v4(scene, 0.5_qp, 0.05_qp, 1, 1, v4, e_short, counts, stat, msg)
         call check(error, stat == status_invalid .and. index(msg, "e_samples") > 0, &
             "short e_samples not refused: "//trim(msg))
         call sampler%release()
@@ -300,16 +307,15 @@ contains
         type(error_t), allocatable, intent(out) :: error
         integer, parameter :: n = 400
         type(scene_t) :: scene
-        type(normal_sampler_t) :: sampler
         type(mc_counts_t) :: counts
-        real(dp) :: v4(n), e(n), v4_cut(n)
-        real(qp) :: mean, sd, exact_mean, exact_sd
+        real(dp) :: v4(n), e(n), v4_cut(n), e_cut(n)
+        real(dp) :: mean, sd
+        real(qp) :: exact_mean, exact_sd
         integer :: i, stat
         character(len=200) :: msg
         call scene_init(scene, stat, msg)
         call check(error, cubic_law_applies(scene), "definition's row has no cubic law")
-        call sampler%seed(4242, stat, msg)
-        call monte_carlo_v4(sampler, scene, m_def, s_def, v4, counts, stat, msg, e)
+        call monte_carlo_v4(scene, m_def, s_def, 4242, 1, v4, e, counts, stat, msg)
         call check(error, stat == status_normal, "refused: "//trim(msg))
         do i = 1, n
             if (e(i) <= 0.27_dp) cycle
@@ -324,11 +330,12 @@ contains
         call check(error, counts%collapsed == 0 .and. counts%incomplete == 0, &
             "unexpected collapsed or incomplete runs")
 
-        call sampler%seed(4242, stat, msg)
-        call monte_carlo_v4(sampler, scene, m_def, s_def, v4_cut(:137), counts, stat, msg)
-        call monte_carlo_v4(sampler, scene, m_def, s_def, v4_cut(138:), counts, stat, msg)
-        call sampler%release()
-        call check(error, all(v4_cut == v4), "stream cut in two calls differs")
+        call monte_carlo_v4(scene, m_def, s_def, 4242, 1, v4_cut(:137), e_cut(:137), counts, &
+            stat, msg)
+        call monte_carlo_v4(scene, m_def, s_def, 4242, 138, v4_cut(138:), e_cut(138:), counts, &
+            stat, msg)
+        call check(error, all(v4_cut == v4) .and. all(e_cut == e), &
+            "stream cut in two calls differs")
     end subroutine test_small_mc
 
     !> The bound of the region where sphere 4 is struck once agrees with
@@ -353,5 +360,79 @@ contains
         call scene_init(scene, stat, msg, p=5)
         call check(error, .not. cubic_law_applies(scene), "p = 5: no cubic law")
     end subroutine test_single_impact_bound
+
+    !> The radix sort orders doubles of both signs, zeros, subnormals, huge
+    !> values and repeats as the insertion sort of real128 copies does.
+    subroutine test_radix_sort(error)
+        type(error_t), allocatable, intent(out) :: error
+        integer, parameter :: n = 3000
+        real(dp) :: x(n)
+        real(qp) :: ref(n)
+        integer :: i
+        do i = 1, n
+            x(i) = (modulo(i*0.6180339887498949_dp, 1.0_dp) - 0.3_dp)*10.0_dp**mod(i, 7)
+        end do
+        x(1:6) = [0.0_dp, -0.0_dp, tiny(1.0_dp)/8, -huge(1.0_dp), huge(1.0_dp), x(7)]
+        x(100:150) = 0.25_dp
+        ref = real(x, qp)
+        call sort(ref)
+        call radix_sort(x)
+        call check(error, all(real(x, qp) == ref), "radix sort differs from insertion sort")
+        x = 0.5_dp
+        call radix_sort(x)
+        call check(error, all(x == 0.5_dp), "equal values changed")
+    end subroutine test_radix_sort
+
+    !> The Monte Carlo on the lean path and on the engine give the same
+    !> samples and counts, bit for bit, over a stretch of the stream across a
+    !> block boundary and into the tail where the law is cut at e = 0.
+    subroutine test_lean_mc(error)
+        type(error_t), allocatable, intent(out) :: error
+        integer, parameter :: n = 3000, first = 8500
+        type(scene_t) :: scene
+        type(mc_counts_t) :: counts, counts_engine
+        real(dp) :: v4(n), e(n), v4_engine(n), e_engine(n)
+        integer :: stat
+        character(len=200) :: msg
+        call scene_init(scene, stat, msg)
+        ! a wide law: collapsed rows (e < e_crit) and the region of several impacts
+        call monte_carlo_v4(scene, 0.3_qp, 0.2_qp, 7, first, v4, e, counts, stat, msg)
+        call monte_carlo_v4(scene, 0.3_qp, 0.2_qp, 7, first, v4_engine, e_engine, &
+            counts_engine, stat, msg, lean=.false.)
+        call check(error, stat == status_normal, "refused: "//trim(msg))
+        call check(error, all(e == e_engine), "different e")
+        call check(error, all(v4 == v4_engine), "lean and engine v4 differ")
+        call check(error, counts%collapsed == counts_engine%collapsed .and. &
+            counts%redraws == counts_engine%redraws .and. counts%collapsed > 0, &
+            "counts differ, or no collapsed run in the sample")
+    end subroutine test_lean_mc
+
+    !> One, two and three threads (where built with OpenMP) give the same
+    !> samples and counts.
+    subroutine test_threads(error)
+        type(error_t), allocatable, intent(out) :: error
+        integer, parameter :: n = 35000
+        type(scene_t) :: scene
+        type(mc_counts_t) :: counts(3)
+        real(dp), allocatable :: v4(:, :), e(:, :)
+        integer :: stat, threads, t
+        character(len=200) :: msg
+        call scene_init(scene, stat, msg)
+        allocate (v4(n, 3), e(n, 3))
+        threads = 1
+        !$ threads = omp_get_max_threads()
+        do t = 1, 3
+            !$ call omp_set_num_threads(t)
+            call monte_carlo_v4(scene, m_def, s_def, 12, 1, v4(:, t), e(:, t), counts(t), &
+                stat, msg)
+        end do
+        !$ call omp_set_num_threads(threads)
+        call check(error, all(v4(:, 2) == v4(:, 1)) .and. all(v4(:, 3) == v4(:, 1)), &
+            "v4 depends on the number of threads")
+        call check(error, all(e(:, 2) == e(:, 1)) .and. all(e(:, 3) == e(:, 1)), &
+            "e depends on the number of threads")
+        call check(error, all(counts%redraws == counts(1)%redraws) .and. &
+            all(counts%runs == n), "counts depend on the number of threads")
+    end subroutine test_threads
 
 end module test_monte_carlo
