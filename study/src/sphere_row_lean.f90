@@ -122,29 +122,58 @@ contains
         logical, intent(out) :: deferred
         integer, intent(out), optional :: n
         integer, intent(inout), optional :: sequence(:)
-        real(qp) :: y(3), dy(3), v1, kick, neg_e, t_fast, dt, ti, w, u, r
-        integer :: cls(3), hist(lean_collisions_max), runlen(period_check)
-        integer :: i, k, c, l
+        real(qp) :: dy(3), v1, kick, t_fast
+        integer :: hist(lean_collisions_max), c
 
         deferred = .true.
         status = status_invalid
         v4 = 0.0_qp
         if (present(n)) n = 0
         if (.not. self%ready) return
-        if (e == 0.0_qp) then
-            call defer()
+        if (e /= 0.0_qp) then
+            ! once per run: the impact factor, and the rate below which a closing
+            ! gap's collision leaves a rate e |dy| > 2 tv (1-u)^2 > tv: -2 tv / e,
+            ! used only where tv is a normal number and the bound finite
+            kick = (1.0_qp + e)*self%ratio
+            t_fast = huge(1.0_qp)
+            if (self%tv >= tiny(1.0_qp)) then
+                t_fast = 2.0_qp*self%tv/e
+                if (.not. (t_fast <= huge(1.0_qp))) t_fast = huge(1.0_qp)
+            end if
+            call lean_collide(self, kick, -e, t_fast, v1, dy, hist, c, deferred)
+        end if
+        if (deferred) then
+            ! e = 0 or a run the engine must finish: the engine's own run
+            self%scene%e = e
+            call simulate(self%scene, self%run)
+            v4 = self%run%v(4)
+            status = self%run%status
+            if (present(n)) n = self%run%n
             return
         end if
-        ! once per run: the impact factor, and the rate below which a closing
-        ! gap's collision leaves a rate e |dy| > 2 tv (1-u)^2 > tv: -2 tv / e,
-        ! used only where tv is a normal number and the bound finite
-        kick = (1.0_qp + e)*self%ratio
-        neg_e = -e
-        t_fast = huge(1.0_qp)
-        if (self%tv >= tiny(1.0_qp)) then
-            t_fast = 2.0_qp*self%tv/e
-            if (.not. (t_fast <= huge(1.0_qp))) t_fast = huge(1.0_qp)
-        end if
+        ! run_finish: v_{i+1} = v_i + dy_i, summed from sphere 1
+        v4 = ((v1 + dy(1)) + dy(2)) + dy(3)
+        status = status_normal
+        if (present(n)) n = c
+        if (present(sequence)) sequence(:c) = hist(:c)
+    end subroutine lean_v4
+
+    !> The binary collisions of one lean run from the initial gaps, with the
+    !> impact factor `kick`, `neg_e` = -e and the fast-closing bound `t_fast`
+    !> of its e: on return the rate `v1` of sphere 1, the gap rates `dy`, the
+    !> pairs `hist(:c)` in order; `deferred` if the engine must run it instead
+    !> (see the module's description), the state then being of no use.
+    subroutine lean_collide(self, kick, neg_e, t_fast, v1, dy, hist, c, deferred)
+        type(lean_row_t), intent(in) :: self
+        real(qp), intent(in) :: kick, neg_e, t_fast
+        real(qp), intent(out) :: v1, dy(3)
+        integer, intent(out) :: hist(lean_collisions_max), c
+        logical, intent(out) :: deferred
+        real(qp) :: y(3), dt, ti, w, u, r
+        integer :: cls(3), runlen(period_check)
+        integer :: i, k, l
+
+        deferred = .true.
         y = self%a
         dy = [-self%v0, 0.0_qp, 0.0_qp]
         v1 = self%v0
@@ -171,10 +200,7 @@ contains
                 end if
             end do
             if (k == 0) exit
-            if (c >= self%n_stop) then
-                call defer()
-                return
-            end if
+            if (c >= self%n_stop) return
             ! every other moving gap advances linearly; only a closing one can
             ! round below 0, where the engine's max(0, .) applies
             do i = 1, 3
@@ -201,10 +227,7 @@ contains
             ! the engine's fallback looks for a quiet group only if this new
             ! rate (e |w| >= 0) is insignificant; a fast gap cannot get there
             if (cls(k) /= gap_fast) then
-                if (dy(k) <= self%tv) then
-                    call defer()
-                    return
-                end if
+                if (dy(k) <= self%tv) return
             end if
             cls(k) = gap_open
             c = c + 1
@@ -213,21 +236,13 @@ contains
             do l = 1, min(period_check, c - 1)
                 if (hist(c - l) == k) then
                     runlen(l) = runlen(l) + 1
-                    if (runlen(l) >= repeats_check*l) then
-                        call defer()
-                        return
-                    end if
+                    if (runlen(l) >= repeats_check*l) return
                 else
                     runlen(l) = 0
                 end if
             end do
         end do
-        ! run_finish: v_{i+1} = v_i + dy_i, summed from sphere 1
-        v4 = ((v1 + dy(1)) + dy(2)) + dy(3)
-        status = status_normal
         deferred = .false.
-        if (present(n)) n = c
-        if (present(sequence)) sequence(:c) = hist(:c)
 
     contains
 
@@ -244,17 +259,7 @@ contains
             end if
         end function classify
 
-        !> Hand the run to the engine.
-        subroutine defer()
-            self%scene%e = e
-            call simulate(self%scene, self%run)
-            v4 = self%run%v(4)
-            status = self%run%status
-            deferred = .true.
-            if (present(n)) n = self%run%n
-        end subroutine defer
-
-    end subroutine lean_v4
+    end subroutine lean_collide
 
     !> Sign bit of a real(16) set (negative numbers and -0).
     elemental logical function is_negative(x)
