@@ -1,0 +1,418 @@
+!> Task c2's statistics and tables from a Monte Carlo stream of v4 (the
+!> sampling itself is monte_carlo_v4's): the main answers from the first n
+!> samples, their checks against the exact law v4 = v0 ((1+e)/2)^3 where it
+!> applies, and c2_answers.tsv, c2_ecdf.tsv, c2_histogram.tsv and
+!> c2_convergence.tsv, whose row N = n of the prefixes is the main answer.
+module sphere_row_c2_tables
+    use sphere_row, only: dp, qp, scene_t, run_t, simulate, str, real_str, itoa, &
+        status_normal
+    use sphere_row_monte_carlo, only: mc_counts_t, normal_mass_outside_unit, normal_cdf, &
+        normal_density, sample_moments, normal_quantile, mean_ci_half_width, sort_values, &
+        sorted_quantile, ks_distance, cubic_law_applies, cubic_law_mean, cubic_law_sd, &
+        cubic_law_quantile, cubic_law_cdf, cubic_law_density, cubic_law_v4, single_impact_bound
+    use sphere_row_tables, only: tab
+    use sphere_row_error, only: error_t, fatal_error, error_io
+    implicit none
+    private
+    public :: c2_sample_t, c2_statistics, c2_write_tables
+
+    !> Rows of the empirical distribution function table (every k-th order statistic).
+    integer, parameter :: ecdf_rows = 1000
+    !> Sampled e re-run to compare the engine with the closed form in real128,
+    !> and stored v4 compared with the closed form rounded to a double.
+    integer, parameter :: closed_form_reruns = 1000, closed_form_checks = 100000
+    real(qp), parameter :: confidence = 0.95_qp
+    !> Asymptotic 95 % quantile of the Kolmogorov distribution: a sample of the
+    !> law itself exceeds ks_95/sqrt(n) with probability 5 %.
+    real(qp), parameter :: ks_95 = 1.3581_qp
+    !> Bracket of the bisection for the region of one impact on sphere 4: at
+    !> e = 0.2 it is struck three times, at e = 1 (elastic) once.
+    real(qp), parameter :: bracket_lo = 0.2_qp, bracket_hi = 1.0_qp
+
+    !> One stream of c2 (its settings and samples, set by the program) and
+    !> the answers c2_statistics finds in it.
+    type :: c2_sample_t
+        !> Main sample size, stream length, seed of the stream, histogram bins.
+        integer :: n = 0, nmax = 0, seed = 0, bins = 0
+        !> The normal law of e and the scene's v0.
+        real(qp) :: mean = 0.0_qp, sd = 0.0_qp, v0 = 0.0_qp
+        !> Counts of the main sample's runs.
+        type(mc_counts_t) :: counts
+        !> v4 and e of the stream (size nmax), and work space for sorted prefixes.
+        real(dp), allocatable :: v4(:), e(:), work(:)
+        !> Whether the exact law applies (the definition's row).
+        logical :: exact = .false.
+        !> The answers of the main sample (statistics in double: see sample_moments).
+        real(dp) :: v_mean = 0.0_dp, v_sd = 0.0_dp, e_mean = 0.0_dp, e_sd = 0.0_dp
+        real(qp) :: half_width = 0.0_qp, z975 = 0.0_qp
+        real(dp) :: q025 = 0.0_dp, q975 = 0.0_dp, ks = 0.0_dp
+        !> Checks against the exact law (definition's row only).
+        real(qp) :: bound = 0.0_qp, max_diff = 0.0_qp, redraws_expected = 0.0_qp
+        real(qp) :: outside_expected = 0.0_qp
+        integer :: outside = 0, reruns = 0, mismatches = 0, checks = 0
+    end type c2_sample_t
+
+contains
+
+    !> The main answers from the first n samples of `c` and, where the exact
+    !> law applies to `scene`, their checks against it; `error` says why if the
+    !> region of the law is not found.
+    subroutine c2_statistics(c, scene, error)
+        type(c2_sample_t), intent(inout) :: c
+        type(scene_t), intent(in) :: scene
+        type(error_t), allocatable, intent(out) :: error
+        allocate (c%work(c%nmax))
+        call sample_moments(c%v4(:c%n), c%v_mean, c%v_sd)
+        call sample_moments(c%e(:c%n), c%e_mean, c%e_sd)
+        c%z975 = normal_quantile(0.5_qp + confidence/2)
+        c%half_width = mean_ci_half_width(real(c%v_sd, qp), c%n, confidence)
+        c%work(:c%n) = c%v4(:c%n)
+        call sort_values(c%work(:c%n))
+        c%q025 = sorted_quantile(c%work(:c%n), 0.025_dp)
+        c%q975 = sorted_quantile(c%work(:c%n), 0.975_dp)
+        c%exact = cubic_law_applies(scene)
+        c%ks = -1.0_dp
+        if (c%exact) c%ks = ks_distance(cubic_law_cdf(c%work(:c%n), c%mean, c%sd, c%v0))
+        c%redraws_expected = c%n*real(normal_mass_outside_unit(c%mean, c%sd), qp) &
+            /(1.0_qp - real(normal_mass_outside_unit(c%mean, c%sd), qp))
+        if (c%exact) call c2_check_closed_form(c, scene, error)
+    end subroutine c2_statistics
+
+    !> Where the exact law applies: the bound of the region of one impact on
+    !> sphere 4 (bisection with the engine), the samples below it, the engine
+    !> against v0 ((1+e)/2)^3 in real128 on a subset re-run, and the stored v4
+    !> of every (n/closed_form_checks)-th sample against the closed form rounded
+    !> to a double (a subsample: in real128 each check costs a tenth of a run).
+    !> `error` says why if the bound is not found.
+    subroutine c2_check_closed_form(c, scene, error)
+        type(c2_sample_t), intent(inout) :: c
+        type(scene_t), intent(in) :: scene
+        type(error_t), allocatable, intent(out) :: error
+        character(len=300) :: msg
+        integer :: stat
+        type(scene_t) :: trial
+        type(run_t) :: run
+        real(qp) :: e_q, inside
+        integer :: stride, i, j
+        call single_impact_bound(scene, bracket_lo, bracket_hi, c%bound, stat, msg)
+        if (stat /= status_normal) then
+            call fatal_error(error, trim(msg))
+            return
+        end if
+        c%outside = count(c%e(:c%n) < c%bound)
+        inside = 1.0_qp - real(normal_mass_outside_unit(c%mean, c%sd), qp)
+        c%outside_expected = c%n*(real(normal_cdf(real(c%bound, dp), c%mean, c%sd), qp) &
+            - real(normal_cdf(0.0_dp, c%mean, c%sd), qp))/inside
+
+        trial = scene
+        stride = max(1, c%n/closed_form_reruns)
+        c%max_diff = 0.0_qp
+        c%reruns = 0
+        do i = 1, c%n + 2
+            if (i <= c%n) then
+                if (mod(i, stride) /= 0) cycle
+                j = i
+            else if (i == c%n + 1) then
+                j = minloc(c%e(:c%n), 1)
+            else
+                j = maxloc(c%e(:c%n), 1)
+            end if
+            e_q = real(c%e(j), qp)
+            if (e_q < c%bound) cycle
+            trial%e = e_q
+            call simulate(trial, run)
+            c%max_diff = max(c%max_diff, abs(run%v(4) - cubic_law_v4(e_q, c%v0)))
+            c%reruns = c%reruns + 1
+        end do
+
+        c%mismatches = 0
+        c%checks = 0
+        do i = max(1, c%n/closed_form_checks), c%n, max(1, c%n/closed_form_checks)
+            c%checks = c%checks + 1
+            e_q = real(c%e(i), qp)
+            if (e_q < c%bound) cycle
+            if (c%v4(i) /= real(cubic_law_v4(e_q, c%v0), dp)) c%mismatches = c%mismatches + 1
+        end do
+    end subroutine c2_check_closed_form
+
+    !> Open every table first, so that a directory that cannot be written is
+    !> refused before anything is in it; then write them. `error` names the
+    !> directory or table that cannot be written.
+    subroutine c2_write_tables(c, out, error)
+        type(c2_sample_t), intent(inout) :: c
+        character(len=*), intent(in) :: out
+        type(error_t), allocatable, intent(out) :: error
+        integer :: units(4), ios, i, k, exitstat, cmdstat
+        logical :: there
+        character(len=*), parameter :: names(4) = [character(len=20) :: &
+            "c2_answers.tsv", "c2_ecdf.tsv", "c2_histogram.tsv", "c2_convergence.tsv"]
+        inquire (file=out//"/.", exist=there)
+        if (.not. there) then
+            call execute_command_line("mkdir -p '"//out//"' 2>/dev/null", exitstat=exitstat, &
+                cmdstat=cmdstat)
+            if (cmdstat /= 0 .or. exitstat /= 0) then
+                call fatal_error(error, "out = '"//out//"': the directory cannot be created", &
+                    error_io)
+                return
+            end if
+        end if
+        units = -1
+        do k = 1, size(names)
+            open (newunit=units(k), file=out//"/"//trim(names(k)), status="replace", &
+                action="write", iostat=ios)
+            if (ios /= 0) then
+                do i = 1, k - 1
+                    close (units(i), status="delete")
+                end do
+                call fatal_error(error, "out = '"//out//"': "//trim(names(k)) &
+                    //" cannot be written", error_io)
+                return
+            end if
+        end do
+        call write_answers(c, units(1))
+        call write_ecdf(c, units(2))
+        call write_histogram(c, units(3))
+        call write_convergence(c, units(4))
+        do k = 1, size(units)
+            close (units(k))
+        end do
+    end subroutine c2_write_tables
+
+    !> c2_answers.tsv: one row per answer with its independent check. The
+    !> checks by the exact law exist for the definition's row only; elsewhere
+    !> their columns are `-` and the rows about its region are left out.
+    subroutine write_answers(c, unit)
+        type(c2_sample_t), intent(in) :: c
+        integer, intent(in) :: unit
+        real(qp) :: m_exact, s_exact
+        m_exact = cubic_law_mean(c%mean, c%sd, c%v0)
+        s_exact = cubic_law_sd(c%mean, c%sd, c%v0)
+        write (unit, "(a)") "key"//tab//"value"//tab//"check"//tab//"check_value"//tab &
+            //"difference"//tab//"how"
+        call answer(unit, "c2.n", itoa(c%n), "Size of the main sample: the first n runs of" &
+            //" the stream, from which every statistic below is taken.")
+        call answer(unit, "c2.nmax", itoa(c%nmax), "Largest N of the convergence table;" &
+            //" runs n+1..nmax continue the same stream.")
+        call answer(unit, "c2.seed", itoa(c%seed), "Seed of GSL's MT19937 whose uniforms" &
+            //" give e by Box-Muller (both normals of each pair used).")
+        call answer(unit, "c2.e_mean", dstr(c%e_mean), "Mean of the sampled e (shifted sums" &
+            //" in double)", "normal_mean", real(c%e_mean, qp), c%mean, &
+            ", against the mean of the normal law.")
+        call answer(unit, "c2.e_sd", dstr(c%e_sd), "Standard deviation of the sampled e", &
+            "normal_sd", real(c%e_sd, qp), c%sd, ", against that of the normal law.")
+        call answer(unit, "c2.redraws", itoa(c%counts%redraws), "Normal draws outside" &
+            //" 0 <= e <= 1, discarded and drawn again (the law is truncated to [0,1])", &
+            "expected_count", real(c%counts%redraws, qp), c%redraws_expected, &
+            ", against n P(outside)/P(inside).")
+        call answer(unit, "c2.collapsed", itoa(c%counts%collapsed), "Runs of the main" &
+            //" sample that ended in the quasi-plastic case (collapse limit taken).")
+        call answer(unit, "c2.incomplete", itoa(c%counts%incomplete), "Runs of the main" &
+            //" sample stopped by max_collisions before their end.")
+        call answer(unit, "c2.collisions", itoa(c%counts%collisions), "Binary collisions of" &
+            //" the runs of the main sample, all together.")
+        if (c%exact) then
+            call answer(unit, "c2.region_e_min", str(c%bound), "Smallest e above which" &
+                //" sphere 4 is struck once, so that v4 = v0((1+e)/2)^3, by bisection on" &
+                //" the engine's collision record in real128", "two_minus_sqrt3", c%bound, &
+                2.0_qp - sqrt(3.0_qp), "; the check, the root of e^2-4e+1, is matched," &
+                //" not derived here.")
+            call answer(unit, "c2.outside_region", itoa(c%outside), "Sampled e below" &
+                //" region_e_min, where the exact law does not hold", "expected_count", &
+                real(c%outside, qp), c%outside_expected, &
+                ", against n P(0 <= e < bound)/P(inside).")
+            call answer(unit, "c2.closed_form_reruns", itoa(c%reruns), "Sampled e (every" &
+                //" n/1000-th and the extremes, inside the region) re-run in real128 for" &
+                //" the next row.")
+            call answer(unit, "c2.closed_form_max_diff", str(c%max_diff), "Largest" &
+                //" |v4 - v0((1+e)/2)^3| over those re-runs, both in real128.")
+            call answer(unit, "c2.closed_form_checks", itoa(c%checks), "Samples (every" &
+                //" n/"//itoa(closed_form_checks)//"-th of the main sample) whose stored" &
+                //" v4 is compared with the closed form in the next row.")
+            call answer(unit, "c2.closed_form_mismatches", itoa(c%mismatches), "Stored v4" &
+                //" (doubles) of those samples inside the region that differ from the" &
+                //" closed form rounded to a double.")
+        end if
+        call answer(unit, "c2.mean", dstr(c%v_mean), "Sample mean of v4 (shifted sums in" &
+            //" double, good to 1e-11 of sd)", "closed_form", real(c%v_mean, qp), m_exact, &
+            ", against v0((1+m)^3+3(1+m)s^2)/8.")
+        call answer(unit, "c2.sd", dstr(c%v_sd), "Sample standard deviation (divisor n-1)" &
+            //" in double", "closed_form", real(c%v_sd, qp), s_exact, ", against" &
+            //" v0 sqrt(9u^4s^2+36u^2s^4+15s^6)/8, u = 1+m.")
+        call answer(unit, "c2.z975", str(c%z975), "Normal quantile z_0.975 from GSL's" &
+            //" gsl_cdf_ugaussian_Pinv, used for the interval of the mean (n >= 100).")
+        call answer(unit, "c2.mean_ci_half_width", str(c%half_width), "z_0.975 sd/sqrt(n)" &
+            //" with the sample sd", "closed_form", c%half_width, &
+            c%z975*s_exact/sqrt(real(c%n, qp)), ", against the same with the exact sd.")
+        call answer(unit, "c2.mean_ci_low", str(c%v_mean - c%half_width), "Lower end of the" &
+            //" 95 % interval of the mean", "closed_form_mean", c%v_mean - c%half_width, m_exact, &
+            "; a negative difference means the exact mean lies above it.")
+        call answer(unit, "c2.mean_ci_high", str(c%v_mean + c%half_width), "Upper end of the" &
+            //" 95 % interval of the mean", "closed_form_mean", c%v_mean + c%half_width, m_exact, &
+            "; a positive difference means the exact mean lies below it.")
+        call answer(unit, "c2.q025", dstr(c%q025), "2.5 % quantile of v4 by a radix sort and" &
+            //" gsl_stats_quantile_from_sorted_data", "closed_form", real(c%q025, qp), &
+            cubic_law_quantile(0.025_qp, c%mean, c%sd, c%v0), &
+            ", against v0((1+m+s z_0.025)/2)^3.")
+        call answer(unit, "c2.q975", dstr(c%q975), "97.5 % quantile of v4 likewise", &
+            "closed_form", real(c%q975, qp), cubic_law_quantile(0.975_qp, c%mean, c%sd, c%v0), &
+            ", against v0((1+m+s z_0.975)/2)^3.")
+        if (c%exact) then
+            call answer(unit, "c2.ks_distance", dstr(c%ks), "Sup distance of the empirical" &
+                //" distribution of v4 to the exact law Phi((2(v/v0)^(1/3)-1-m)/s)", &
+                "ks_critical_95", real(c%ks, qp), ks_95/sqrt(real(c%n, qp)), &
+                ", against the 5 % critical value 1.3581/sqrt(n).")
+        end if
+
+    contains
+
+        !> One row of c2_answers.tsv: `text` is the value as printed, `how` says
+        !> how it was obtained. With a check (and, for a check by the exact law,
+        !> only on the definition's row), `value` - `check_value` is the
+        !> difference and `how_check` ends the sentence.
+        subroutine answer(unit, key_, text, how, check, value_, check_value, how_check)
+            integer, intent(in) :: unit
+            character(len=*), intent(in) :: key_, text, how
+            character(len=*), intent(in), optional :: check, how_check
+            real(qp), intent(in), optional :: value_, check_value
+            character(len=:), allocatable :: columns
+            logical :: checked
+            checked = present(check)
+            if (checked) checked = c%exact .or. index(check, "normal") == 1 &
+                .or. check == "expected_count"
+            if (checked) then
+                columns = check//tab//str(check_value)//tab//str(value_ - check_value)//tab &
+                    //how//how_check
+            else if (present(check)) then
+                columns = "-"//tab//"-"//tab//"-"//tab//how//"; this row has no closed form."
+            else
+                columns = "-"//tab//"-"//tab//"-"//tab//how
+            end if
+            write (unit, "(a)") key_//tab//text//tab//columns
+        end subroutine answer
+
+    end subroutine write_answers
+
+    !> c2_ecdf.tsv: the empirical distribution function at every k-th order
+    !> statistic (and the first and last), with the normal law of the sample's
+    !> mean and deviation and the exact law at the same v4.
+    subroutine write_ecdf(c, unit)
+        type(c2_sample_t), intent(in) :: c
+        integer, intent(in) :: unit
+        integer :: i, k
+        character(len=:), allocatable :: exact_text
+        write (unit, "(a)") "rank[1]"//tab//"v4[V]"//tab//"ecdf[1]"//tab//"normal_cdf[1]" &
+            //tab//"exact_cdf[1]"
+        k = max(1, c%n/ecdf_rows)
+        do i = 1, c%n
+            if (.not. ecdf_row(i, k)) cycle
+            exact_text = "-"
+            if (c%exact) exact_text = dstr(cubic_law_cdf(c%work(i), c%mean, c%sd, c%v0))
+            write (unit, "(a)") itoa(i)//tab//dstr(c%work(i))//tab &
+                //dstr(real(i, dp)/real(c%n, dp))//tab &
+                //dstr(normal_cdf(c%work(i), real(c%v_mean, qp), real(c%v_sd, qp)))//tab &
+                //exact_text
+        end do
+
+    contains
+
+        !> Rows of the distribution function table: every k-th order statistic,
+        !> the first and last, and in the outer k of each tail every k/20-th, so
+        !> that the tails (where the laws differ most in relative terms) are drawn
+        !> with points too.
+        pure logical function ecdf_row(i, k)
+            integer, intent(in) :: i, k
+            ecdf_row = i == 1 .or. i == c%n .or. mod(i, k) == 0
+            if (i < k .or. i > c%n - k) ecdf_row = ecdf_row .or. mod(i, max(1, k/20)) == 0
+        end function ecdf_row
+
+    end subroutine write_ecdf
+
+    !> c2_histogram.tsv: `bins` equal bins from the smallest to the largest v4
+    !> of the main sample, with the exact density and the normal density of the
+    !> sample's mean and deviation at each centre.
+    subroutine write_histogram(c, unit)
+        type(c2_sample_t), intent(in) :: c
+        integer, intent(in) :: unit
+        integer, allocatable :: hits(:)
+        real(dp) :: low, width, centre, density
+        character(len=:), allocatable :: exact_text
+        integer :: i, j
+        allocate (hits(c%bins), source=0)
+        low = c%work(1)
+        width = (c%work(c%n) - low)/c%bins
+        if (.not. (width > 0.0_dp)) width = 1.0_dp
+        do i = 1, c%n
+            j = min(c%bins, 1 + int((c%work(i) - low)/width))
+            hits(j) = hits(j) + 1
+        end do
+        write (unit, "(a)") "v4_centre[V]"//tab//"count[1]"//tab//"density[1/V]"//tab &
+            //"exact_density[1/V]"//tab//"normal_density[1/V]"
+        do j = 1, c%bins
+            centre = low + (j - 0.5_dp)*width
+            density = real(hits(j), dp)/(real(c%n, dp)*width)
+            exact_text = "-"
+            if (c%exact) exact_text = dstr(cubic_law_density(centre, c%mean, c%sd, c%v0))
+            write (unit, "(a)") dstr(centre)//tab//itoa(hits(j))//tab//dstr(density)//tab &
+                //exact_text//tab//dstr(normal_density(centre, real(c%v_mean, qp), &
+                real(c%v_sd, qp)))
+        end do
+    end subroutine write_histogram
+
+    !> c2_convergence.tsv: the statistics of the prefixes N = 10^2, 10^3, ...
+    !> (and n and nmax) of the stream; the row N = n is the main sample's.
+    !> `work` is reused for each sorted prefix, so this table is written last.
+    subroutine write_convergence(c, unit)
+        type(c2_sample_t), intent(inout) :: c
+        integer, intent(in) :: unit
+        integer, allocatable :: sizes(:)
+        integer :: j, m
+        real(dp) :: p_mean, p_sd
+        real(qp) :: p_half, m_exact
+        real(dp) :: p_q025, p_q975
+        character(len=:), allocatable :: exact_text
+        write (unit, "(a)") "n[1]"//tab//"mean[V]"//tab//"sd[V]"//tab//"ci_half_width[V]" &
+            //tab//"half_width_sqrt_n[V]"//tab//"q025[V]"//tab//"q975[V]"//tab &
+            //"mean_minus_exact[V]"
+        sizes = [integer ::]
+        m = 100
+        do while (m <= c%nmax)
+            sizes = [sizes, m]
+            if (m > c%nmax/10) exit
+            m = 10*m
+        end do
+        ! n and nmax put in their places among the ascending powers, once each
+        sizes = [pack(sizes, sizes < c%n), c%n, pack(sizes, sizes > c%n)]
+        sizes = [pack(sizes, sizes < c%nmax), c%nmax, pack(sizes, sizes > c%nmax)]
+        m_exact = cubic_law_mean(c%mean, c%sd, c%v0)
+        do j = 1, size(sizes)
+            m = sizes(j)
+            if (m == c%n) then
+                ! the main sample is this very prefix: its statistics are known
+                p_mean = c%v_mean
+                p_sd = c%v_sd
+                p_q025 = c%q025
+                p_q975 = c%q975
+            else
+                call sample_moments(c%v4(:m), p_mean, p_sd)
+                c%work(:m) = c%v4(:m)
+                call sort_values(c%work(:m))
+                p_q025 = sorted_quantile(c%work(:m), 0.025_dp)
+                p_q975 = sorted_quantile(c%work(:m), 0.975_dp)
+            end if
+            p_half = mean_ci_half_width(real(p_sd, qp), m, confidence)
+            exact_text = "-"
+            if (c%exact) exact_text = str(p_mean - m_exact)
+            write (unit, "(a)") itoa(m)//tab//dstr(p_mean)//tab//dstr(p_sd)//tab//str(p_half) &
+                //tab//str(p_half*sqrt(real(m, qp)))//tab//dstr(p_q025)//tab//dstr(p_q975) &
+                //tab//exact_text
+        end do
+    end subroutine write_convergence
+
+    !> A double with 17 significant digits, enough to give back its bits.
+    pure function dstr(x) result(s)
+        real(dp), intent(in) :: x
+        character(len=:), allocatable :: s
+        s = real_str(real(x, qp), 17)
+    end function dstr
+
+end module sphere_row_c2_tables
