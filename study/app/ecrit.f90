@@ -14,115 +14,136 @@ program c12_ecrit
     !> The rows whose rate-map e_c has a published or derived closed form.
     real(qp), parameter :: closed_3 = 7.0_qp - 4.0_qp*sqrt(3.0_qp)
     real(qp), parameter :: closed_4 = 3.0_qp - 2.0_qp*sqrt(2.0_qp)
-    character(len=:), allocatable :: out, method
+    character(len=:), allocatable :: out
     character(len=300) :: msg
     logical, allocatable :: large(:)
     type(ecrit_settings_t) :: s
     type(ecrit_row_t), allocatable :: rows(:)
-    integer :: stat, p_min, p_max, p_fit_min, j, unit, n_large, n_multi, n_decrease
+    integer :: stat, p_min, p_max, p_fit_min, unit, n_large, n_multi, n_decrease
     integer, allocatable :: ps(:)
-    real(qp), allocatable :: e_c(:), one_minus(:), p_real(:)
-    real(qp) :: c_fit, slope, k_my, width
+    real(qp), allocatable :: e_c(:), p_real(:)
+    real(qp) :: c_fit, slope, k_my
     character(len=16), allocatable :: methods(:)
 
     call define_keys()
-    call read_keys(cli)
-    out = cli%get_word("out")
-    p_min = cli%get_int("p_min")
-    p_max = cli%get_int("p_max")
-    p_fit_min = cli%get_int("p_fit_min")
-    s%n_grid = cli%get_int("n_grid")
-    s%resolution = cli%get_real("resolution")
-    s%resolution_coarse = cli%get_real("resolution_coarse")
-    s%max_steps = cli%get_int("max_steps")
-    s%tol = cli%get_real("tol")
-    s%max_collisions = cli%get_int("max_collisions")
-    s%max_collisions_fine = cli%get_int("max_collisions_fine")
-    s%p_fine = cli%get_int("p_fine")
-    s%map_p_max = cli%get_int("map_p_max")
-    s%n_fit = cli%get_int("n_fit")
-    s%fit_n_min = cli%get_int("fit_n_min")
-    s%period_max = cli%get_int("period_max")
-    if (p_max < p_min) call fail("p_max = "//itoa(p_max)//": allowed p_max >= p_min = " &
-        //itoa(p_min))
-
-    ! every row
-    ps = [(j, j=p_min, p_max)]
-    allocate (rows(size(ps)), e_c(size(ps)), methods(size(ps)))
-    do j = 1, size(ps)
-        call ecrit_row(ps(j), s, rows(j))
-        call row_estimate(rows(j), s%map_window, e_c(j), method)
-        methods(j) = method
-    end do
-
-    ! e_c(p) for large p: 1 - e_c = c p^(-beta), and McNamara-Young's form
-    large = ps >= p_fit_min
-    n_large = count(large)
-    one_minus = 1.0_qp - e_c
-    p_real = real(ps, qp)
-    call power_fit(p_real, one_minus, large, c_fit, slope, n_large)
-    k_my = 0.0_qp
-    if (n_large > 0) k_my = mcnamara_young_k(ps, e_c, large)
-    n_multi = count(rows%changes > 1)
-    n_decrease = count(e_c(2:) <= e_c(:size(ps) - 1))
-
-    call open_table(out, "ecrit.tsv", "p"//tab//"e_crit[1]"//tab//"method"//tab// &
-        "e_low[1]"//tab//"e_high[1]"//tab//"bracket_width[1]"//tab//"bracket_digits"//tab// &
-        "outcome_low"//tab//"kind"//tab//"e_cycle_certified[1]"//tab//"changes"//tab// &
-        "capped"//tab//"C"//tab//"alpha"//tab//"n_fit"//tab//"e_crit_rate_map[1]"//tab// &
-        "period"//tab//"closed_form"//tab//"closed_form_value[1]"//tab// &
-        "e_crit_power_fit[1]"//tab//"e_crit_mcnamara_young[1]", unit, stat, msg)
-    call stop_unless_normal(stat, msg)
-    do j = 1, size(ps)
-        associate (r => rows(j))
-            width = r%b%e_high - r%b%e_low
-            write (unit, "(a)") itoa(r%p)//tab//str(e_c(j))//tab//trim(methods(j))//tab// &
-                str(r%b%e_low)//tab//str(r%b%e_high)//tab//str(width)//tab// &
-                itoa(int(log10(e_c(j)/width)))//tab//outcome_word(r%b%outcome_low)//tab// &
-                merge("real(16)", "real64  ", r%precision == qp)//tab// &
-                optional_real(r%b%e_cycle, r%b%e_cycle > 0)//tab//itoa(r%changes)//tab// &
-                itoa(r%capped)//tab//optional_real(r%c, r%n_fit_used >= 2)//tab// &
-                optional_real(r%alpha, r%n_fit_used >= 2)//tab//itoa(r%n_fit_used)//tab// &
-                optional_real(r%e_map, r%has_map)//tab//itoa(size(r%cycle))//tab// &
-                trim(r%form%text)//tab//optional_real(r%form%value, r%form%found)//tab// &
-                optional_real(1.0_qp - c_fit*p_real(j)**slope, n_large >= 2)//tab// &
-                optional_real(mcnamara_young_e(r%p, k_my), k_my > 0.0_qp)
-        end associate
-    end do
-    close (unit)
-
-    call open_table(out, "ecrit_answers.tsv", answer_header, unit, stat, msg)
-    call stop_unless_normal(stat, msg)
-    call map_answer(3, closed_3, "closed_form_7-4sqrt3")
-    call map_answer(4, closed_4, "closed_form_3-2sqrt2")
-    do j = 1, size(ps)
-        if (ps(j) < 5 .or. .not. rows(j)%has_map) cycle
-        call map_answer(ps(j), 0.0_qp, "-")
-    end do
-    call write_answer(unit, "ecrit.rows", itoa(size(ps)), "-", "-", "-", &
-        "p = "//itoa(p_min)//" ... "//itoa(p_max)//"; edge kinds: "// &
-        itoa(count(rows%precision == qp))//" real(16) (tol = "//str(s%tol)//"), the "// &
-        "others real64 (tol = "//str(s%tol_coarse)//", max_collisions = "// &
-        itoa(s%max_collisions)//")")
-    call write_answer(unit, "ecrit.several_changes", itoa(n_multi), "one_interval", "0", &
-        itoa(n_multi), "rows whose scan of "//itoa(s%n_grid - 1)//" points changes between "// &
-        "finite and not finite more than once (the collapse region is then not one "// &
-        "interval [0, e_c) on the grid)")
-    call write_answer(unit, "ecrit.not_increasing", itoa(n_decrease), "increasing", "0", &
-        itoa(n_decrease), "steps p -> p+1 where e_crit does not increase")
-    call write_answer(unit, "ecrit.edges_capped", itoa(count(rows%b%outcome_low == 4)), "-", &
-        "-", "-", "rows whose edge is bisected against runs that reached max_collisions "// &
-        "undecided: there the edge depends on max_collisions and is only an estimate of e_c")
-    call write_answer(unit, "ecrit.power_beta", str(-slope), "-", "-", "-", &
-        "1 - e_crit = c p^(-beta), least squares of log(1 - e_crit) on log p over "// &
-        itoa(n_large)//" rows with p >= "//itoa(p_fit_min))
-    call write_answer(unit, "ecrit.power_c", str(c_fit), "-", "-", "-", "c of that fit")
-    call write_answer(unit, "ecrit.mcnamara_young_k", str(k_my), "-", "-", "-", &
-        "K of p = K (-ln(1 - e_crit))/(1 - e_crit), McNamara and Young's scaling, least "// &
-        "squares through the origin over the same rows")
-    close (unit)
+    call read_settings()
+    call compute_rows()
+    call write_rows()
+    call write_answers()
 
 contains
+
+    !> The settings of the keys; p_max >= p_min is what their ranges cannot say.
+    subroutine read_settings()
+        call read_keys(cli)
+        out = cli%get_word("out")
+        p_min = cli%get_int("p_min")
+        p_max = cli%get_int("p_max")
+        p_fit_min = cli%get_int("p_fit_min")
+        s%n_grid = cli%get_int("n_grid")
+        s%resolution = cli%get_real("resolution")
+        s%resolution_coarse = cli%get_real("resolution_coarse")
+        s%max_steps = cli%get_int("max_steps")
+        s%tol = cli%get_real("tol")
+        s%max_collisions = cli%get_int("max_collisions")
+        s%max_collisions_fine = cli%get_int("max_collisions_fine")
+        s%p_fine = cli%get_int("p_fine")
+        s%map_p_max = cli%get_int("map_p_max")
+        s%n_fit = cli%get_int("n_fit")
+        s%fit_n_min = cli%get_int("fit_n_min")
+        s%period_max = cli%get_int("period_max")
+        if (p_max < p_min) call fail("p_max = "//itoa(p_max)//": allowed p_max >= p_min = " &
+            //itoa(p_min))
+    end subroutine read_settings
+
+    !> Every row's e_c, then the fits over the large p: 1 - e_c = c p^(-beta),
+    !> and McNamara and Young's form.
+    subroutine compute_rows()
+        character(len=:), allocatable :: method
+        real(qp), allocatable :: one_minus(:)
+        integer :: j
+        ps = [(j, j=p_min, p_max)]
+        allocate (rows(size(ps)), e_c(size(ps)), methods(size(ps)))
+        do j = 1, size(ps)
+            call ecrit_row(ps(j), s, rows(j))
+            call row_estimate(rows(j), s%map_window, e_c(j), method)
+            methods(j) = method
+        end do
+        large = ps >= p_fit_min
+        n_large = count(large)
+        one_minus = 1.0_qp - e_c
+        p_real = real(ps, qp)
+        call power_fit(p_real, one_minus, large, c_fit, slope, n_large)
+        k_my = 0.0_qp
+        if (n_large > 0) k_my = mcnamara_young_k(ps, e_c, large)
+        n_multi = count(rows%changes > 1)
+        n_decrease = count(e_c(2:) <= e_c(:size(ps) - 1))
+    end subroutine compute_rows
+
+    !> ecrit.tsv: one row per p with its edge, rate map and fits.
+    subroutine write_rows()
+        real(qp) :: width
+        integer :: j
+        call open_table(out, "ecrit.tsv", "p"//tab//"e_crit[1]"//tab//"method"//tab// &
+            "e_low[1]"//tab//"e_high[1]"//tab//"bracket_width[1]"//tab//"bracket_digits"//tab// &
+            "outcome_low"//tab//"kind"//tab//"e_cycle_certified[1]"//tab//"changes"//tab// &
+            "capped"//tab//"C"//tab//"alpha"//tab//"n_fit"//tab//"e_crit_rate_map[1]"//tab// &
+            "period"//tab//"closed_form"//tab//"closed_form_value[1]"//tab// &
+            "e_crit_power_fit[1]"//tab//"e_crit_mcnamara_young[1]", unit, stat, msg)
+        call stop_unless_normal(stat, msg)
+        do j = 1, size(ps)
+            associate (r => rows(j))
+                width = r%b%e_high - r%b%e_low
+                write (unit, "(a)") itoa(r%p)//tab//str(e_c(j))//tab//trim(methods(j))//tab// &
+                    str(r%b%e_low)//tab//str(r%b%e_high)//tab//str(width)//tab// &
+                    itoa(int(log10(e_c(j)/width)))//tab//outcome_word(r%b%outcome_low)//tab// &
+                    merge("real(16)", "real64  ", r%precision == qp)//tab// &
+                    optional_real(r%b%e_cycle, r%b%e_cycle > 0)//tab//itoa(r%changes)//tab// &
+                    itoa(r%capped)//tab//optional_real(r%c, r%n_fit_used >= 2)//tab// &
+                    optional_real(r%alpha, r%n_fit_used >= 2)//tab//itoa(r%n_fit_used)//tab// &
+                    optional_real(r%e_map, r%has_map)//tab//itoa(size(r%cycle))//tab// &
+                    trim(r%form%text)//tab//optional_real(r%form%value, r%form%found)//tab// &
+                    optional_real(1.0_qp - c_fit*p_real(j)**slope, n_large >= 2)//tab// &
+                    optional_real(mcnamara_young_e(r%p, k_my), k_my > 0.0_qp)
+            end associate
+        end do
+        close (unit)
+    end subroutine write_rows
+
+    !> ecrit_answers.tsv: the rate-map answers and the counts over the rows.
+    subroutine write_answers()
+        integer :: j
+        call open_table(out, "ecrit_answers.tsv", answer_header, unit, stat, msg)
+        call stop_unless_normal(stat, msg)
+        call map_answer(3, closed_3, "closed_form_7-4sqrt3")
+        call map_answer(4, closed_4, "closed_form_3-2sqrt2")
+        do j = 1, size(ps)
+            if (ps(j) < 5 .or. .not. rows(j)%has_map) cycle
+            call map_answer(ps(j), 0.0_qp, "-")
+        end do
+        call write_answer(unit, "ecrit.rows", itoa(size(ps)), "-", "-", "-", &
+            "p = "//itoa(p_min)//" ... "//itoa(p_max)//"; edge kinds: "// &
+            itoa(count(rows%precision == qp))//" real(16) (tol = "//str(s%tol)//"), the "// &
+            "others real64 (tol = "//str(s%tol_coarse)//", max_collisions = "// &
+            itoa(s%max_collisions)//")")
+        call write_answer(unit, "ecrit.several_changes", itoa(n_multi), "one_interval", "0", &
+            itoa(n_multi), "rows whose scan of "//itoa(s%n_grid - 1)//" points changes " &
+            //"between finite and not finite more than once (the collapse region is then " &
+            //"not one interval [0, e_c) on the grid)")
+        call write_answer(unit, "ecrit.not_increasing", itoa(n_decrease), "increasing", "0", &
+            itoa(n_decrease), "steps p -> p+1 where e_crit does not increase")
+        call write_answer(unit, "ecrit.edges_capped", itoa(count(rows%b%outcome_low == 4)), "-", &
+            "-", "-", "rows whose edge is bisected against runs that reached max_collisions "// &
+            "undecided: there the edge depends on max_collisions and is only an estimate of e_c")
+        call write_answer(unit, "ecrit.power_beta", str(-slope), "-", "-", "-", &
+            "1 - e_crit = c p^(-beta), least squares of log(1 - e_crit) on log p over "// &
+            itoa(n_large)//" rows with p >= "//itoa(p_fit_min))
+        call write_answer(unit, "ecrit.power_c", str(c_fit), "-", "-", "-", "c of that fit")
+        call write_answer(unit, "ecrit.mcnamara_young_k", str(k_my), "-", "-", "-", &
+            "K of p = K (-ln(1 - e_crit))/(1 - e_crit), McNamara and Young's scaling, least "// &
+            "squares through the origin over the same rows")
+        close (unit)
+    end subroutine write_answers
 
     !> The rate-map answer of row p, with the closed form `check` if given.
     subroutine map_answer(p, closed, check)

@@ -6,17 +6,17 @@ program c12_methods
     use, intrinsic :: iso_fortran_env, only: output_unit, int64, &
         compiler_version, compiler_options
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
-    use sphere_row, only: dp, qp, scene_t, scene_init, status_normal, status_word, str, itoa
-    use sphere_row_tables, only: cpu_model, tab
+    use sphere_row, only: dp, qp, scene_t, status_normal, status_word, str, itoa
+    use sphere_row_tables, only: cpu_model, tab, yes_no
     use sphere_row_outcome, only: outcome_t, comparison_t, compare_outcomes, classify, &
         category_word
-    use sphere_row_methods, only: method_t, new_method, reference_method, method_prepare, &
-        method_run, method_name, method_label, method_setting, method_v_tol, kind_name, &
-        method_engine, method_absolute, method_ode, method_stepping, stepper_rk8pd, &
-        stepper_rkf45, engine_methods, method_time
+    use sphere_row_methods, only: method_t, new_method, method_run, method_name, method_label, &
+        method_setting, method_v_tol, kind_name, method_engine, method_absolute, method_ode, &
+        method_stepping, stepper_rk8pd, stepper_rkf45, engine_methods, method_time
     use sphere_row_kind_engines, only: kind_info, kind_info_t
     use sphere_row_study_cli, only: cli_t, start_program, read_keys, fail, stop_unless_normal
     use sphere_row_bisection, only: bisect
+    use sphere_row_method_runs, only: scene_at, reference_run, prepare_method
     implicit none
 
     character(len=*), parameter :: name = "c12-methods"
@@ -155,7 +155,7 @@ contains
             call scene_at(scenes(s), scene)
             call reference_run(scene, ref)
             do m = 1, size(methods)
-                call prepare(methods(m), scene)
+                call prepare_method(methods(m), scene)
                 call method_run(methods(m), run, record=.true.)
                 cmp = compare_outcomes(ref, run)
                 ! One number per run for the chart: velocities in units of v0,
@@ -234,7 +234,7 @@ contains
             status_ref(j) = ref%status
             do m = 1, size(mine)
                 if (.not. in_map(m)) cycle
-                call prepare(mine(m), scene)
+                call prepare_method(mine(m), scene)
                 call method_run(mine(m), run, record=.true.)
                 category(m, j) = classify(ref, run, method_v_tol(mine(m), scene%v0))
                 n_run(m, j) = run%n
@@ -328,7 +328,7 @@ contains
         type(comparison_t) :: cmp
         call scene_at(e_crit + 10.0_qp**log_distance, scene)
         call reference_run(scene, ref)
-        call prepare(method, scene)
+        call prepare_method(method, scene)
         call method_run(method, run, record=.true.)
         cmp = compare_outcomes(ref, run)
         right = cmp%same_sequence .and. run%status == status_normal
@@ -360,42 +360,5 @@ contains
         write (unit, "(a)") "stepping_max_steps"//tab//itoa(max_steps)
         close (unit)
     end subroutine platform
-
-    subroutine scene_at(e, scene)
-        real(qp), intent(in) :: e
-        type(scene_t), intent(out) :: scene
-        integer :: code
-        character(len=200) :: text
-        call scene_init(scene, code, text, e=e)
-        if (code /= status_normal) call fail(text)
-    end subroutine scene_at
-
-    subroutine reference_run(scene, ref)
-        type(scene_t), intent(in) :: scene
-        type(outcome_t), intent(inout) :: ref
-        type(method_t) :: method
-        method = reference_method()
-        call prepare(method, scene)
-        call method_run(method, ref, record=.true.)
-    end subroutine reference_run
-
-    subroutine prepare(method, scene)
-        type(method_t), intent(inout) :: method
-        type(scene_t), intent(in) :: scene
-        integer :: code
-        character(len=200) :: text
-        call method_prepare(method, scene, code, text)
-        if (code /= status_normal) call fail(text)
-    end subroutine prepare
-
-    pure function yes_no(flag) result(word)
-        logical, intent(in) :: flag
-        character(len=:), allocatable :: word
-        if (flag) then
-            word = "yes"
-        else
-            word = "no"
-        end if
-    end function yes_no
 
 end program c12_methods

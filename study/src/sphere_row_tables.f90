@@ -4,7 +4,7 @@ module sphere_row_tables
     use sphere_row, only: status_normal, status_invalid
     implicit none
     private
-    public :: open_table, write_answer, answer_header, tab, split_tabs, cpu_model
+    public :: open_table, write_answer, answer_header, tab, split_tabs, cpu_model, yes_no
 
     !> The field separator.
     character(len=*), parameter :: tab = achar(9)
@@ -89,5 +89,16 @@ contains
         end do
         close (unit)
     end function cpu_model
+
+    !> "yes" or "no", a flag as a table writes it.
+    pure function yes_no(flag) result(word)
+        logical, intent(in) :: flag
+        character(len=:), allocatable :: word
+        if (flag) then
+            word = "yes"
+        else
+            word = "no"
+        end if
+    end function yes_no
 
 end module sphere_row_tables
