@@ -1,6 +1,6 @@
 !> Tests of the sphere-row command line, run as a separate process.
 module test_cli
-    use testsuite, only: error_t, unittest_t, new_unittest, check
+    use testsuite, only: error_t, unittest_t, new_unittest, check, read_text, count_lines
     implicit none
     private
     public :: collect_cli, program_path
@@ -49,25 +49,9 @@ contains
         if (.not. allocated(path)) path = program_path("sphere-row")
         call execute_command_line(path//" "//args//" > "//out_file//" 2> "//err_file, &
             exitstat=status)
-        out = slurp(out_file)
-        err = slurp(err_file)
+        out = read_text(out_file)
+        err = read_text(err_file)
     end subroutine run_cli
-
-    function slurp(file) result(text)
-        character(len=*), intent(in) :: file
-        character(len=:), allocatable :: text
-        character(len=4000) :: line
-        integer :: unit, ios
-        text = ""
-        open (newunit=unit, file=file, status="old", action="read", iostat=ios)
-        if (ios /= 0) return
-        do
-            read (unit, "(a)", iostat=ios) line
-            if (ios /= 0) exit
-            text = text//trim(line)//new_line("a")
-        end do
-        close (unit)
-    end function slurp
 
     !> Each bad input: exit status 2, one stderr line naming the key, no stdout.
     subroutine test_bad_input(error)
@@ -159,14 +143,5 @@ contains
         call check(error, index(out, "masses=") > 0 .and. index(out, "events=") > 0 .and. &
             index(out, "max_collisions=") > 0 .and. index(out, "tol=") > 0, "--help: keys")
     end subroutine test_help
-
-    pure integer function count_lines(text)
-        character(len=*), intent(in) :: text
-        integer :: i
-        count_lines = 0
-        do i = 1, len(text)
-            if (text(i:i) == new_line("a")) count_lines = count_lines + 1
-        end do
-    end function count_lines
 
 end module test_cli

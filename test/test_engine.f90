@@ -4,7 +4,7 @@ module test_engine
         kinetic_energy, momentum, status_normal, status_collapsed, status_invalid, &
         event_collision, event_collapse, str
     use sphere_row, only: scene_dp_t, run_dp_t
-    use testsuite, only: error_t, unittest_t, new_unittest, check
+    use testsuite, only: error_t, unittest_t, new_unittest, check, seed_random
     implicit none
     private
     public :: collect_engine
@@ -35,12 +35,6 @@ contains
             ]
     end function collect_engine
 
-    subroutine seed()
-        integer :: n
-        call random_seed(size=n)
-        call random_seed(put=[(12345 + 7*n, n=1, n)])
-    end subroutine seed
-
     !> One collision of two spheres of random masses against formula (2).
     subroutine test_two_mass(error)
         type(error_t), allocatable, intent(out) :: error
@@ -49,7 +43,7 @@ contains
         real(qp) :: m(2), e, v1, v2, u(3)
         integer :: i, stat
         character(len=200) :: msg
-        call seed()
+        call seed_random(12345, 7)
         do i = 1, 200
             call random_number(u)
             m = [0.1_qp + 10*u(1), 0.1_qp + 10*u(2)]
@@ -76,7 +70,7 @@ contains
         real(qp), allocatable :: m(:)
         integer :: i, p, stat
         character(len=200) :: msg
-        call seed()
+        call seed_random(12345, 7)
         do i = 1, 300
             call random_number(u)
             p = 2 + int(7*u(1))

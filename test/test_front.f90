@@ -14,7 +14,7 @@ module test_front
         printable
     use sphere_row_format, only: short_text
     use sphere_row_error, only: input_error_t => error_t
-    use testsuite, only: error_t, unittest_t, new_unittest, check
+    use testsuite, only: error_t, unittest_t, new_unittest, check, read_text, count_lines
     use test_cli, only: program_path
     implicit none
     private
@@ -408,8 +408,8 @@ contains
         do i = 1, size(rows)
             call execute_command_line(path//quoted(decode(rows(i)%args))//" > "//out_file &
                 //" 2> "//err_file, exitstat=status)
-            out = slurp(out_file)
-            err = slurp(err_file)
+            out = read_text(out_file)
+            err = read_text(err_file)
             call check(error, status == rows(i)%status, rows(i)%args//": exit status " &
                 //itoa(status))
             call check(error, len(out) == 0, rows(i)%args//": wrote to stdout: "//out)
@@ -591,30 +591,5 @@ contains
         text = ""
         if (allocated(refused)) text = refused%message
     end function message
-
-    function slurp(file) result(text)
-        character(len=*), intent(in) :: file
-        character(len=:), allocatable :: text
-        character(len=8000) :: line
-        integer :: unit, ios
-        text = ""
-        open (newunit=unit, file=file, status="old", action="read", iostat=ios)
-        if (ios /= 0) return
-        do
-            read (unit, "(a)", iostat=ios) line
-            if (ios /= 0) exit
-            text = text//trim(line)//new_line("a")
-        end do
-        close (unit)
-    end function slurp
-
-    pure integer function count_lines(text)
-        character(len=*), intent(in) :: text
-        integer :: i
-        count_lines = 0
-        do i = 1, len(text)
-            if (text(i:i) == new_line("a")) count_lines = count_lines + 1
-        end do
-    end function count_lines
 
 end module test_front

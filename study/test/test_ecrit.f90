@@ -2,7 +2,7 @@
 !> collapse cycle against the closed forms of p = 3 and p = 4, the bisected
 !> edge around them, and e_c growing with p.
 module test_ecrit
-    use sphere_row, only: qp, str, status_normal
+    use sphere_row, only: qp, str, itoa, status_normal
     use sphere_row_ecrit, only: ecrit_settings_t, ecrit_row_t, ecrit_row, rate_map_critical, &
         row_estimate, outcome_word
     use testsuite, only: error_t, unittest_t, new_unittest, check
@@ -31,31 +31,30 @@ contains
     !> p = 3: the cycle 12 gives 7 - 4 sqrt(3).
     subroutine test_map_p3(error)
         type(error_t), allocatable, intent(out) :: error
-        real(qp) :: e_c, m(3)
-        integer :: stat
-        real(qp), parameter :: closed = 7.0_qp - 4.0_qp*sqrt(3.0_qp)
-        real(qp), parameter :: window = 1.0e-3_qp, probe = 1.0e-8_qp
-        m = 1.0_qp
-        call rate_map_critical(m, [1, 2], closed - window, closed + window, probe, e_c, stat)
-        call check(error, stat == status_normal, "p = 3: no sign change of the pair")
-        if (allocated(error)) return
-        call check(error, abs(e_c - closed) <= closed_tol, "p = 3: e_c = "//str(e_c))
+        call check_rate_map(error, 3, [1, 2], 7.0_qp - 4.0_qp*sqrt(3.0_qp))
     end subroutine test_map_p3
 
     !> p = 4: the cycle 32121232 of task b1 gives 3 - 2 sqrt(2).
     subroutine test_map_p4(error)
         type(error_t), allocatable, intent(out) :: error
-        real(qp) :: e_c, m(4)
-        integer :: stat
-        real(qp), parameter :: closed = 3.0_qp - 2.0_qp*sqrt(2.0_qp)
-        real(qp), parameter :: window = 1.0e-3_qp, probe = 1.0e-8_qp
-        m = 1.0_qp
-        call rate_map_critical(m, [3, 2, 1, 2, 1, 2, 3, 2], closed - window, closed + window, &
-            probe, e_c, stat)
-        call check(error, stat == status_normal, "p = 4: no sign change of the pair")
-        if (allocated(error)) return
-        call check(error, abs(e_c - closed) <= closed_tol, "p = 4: e_c = "//str(e_c))
+        call check_rate_map(error, 4, [3, 2, 1, 2, 1, 2, 3, 2], 3.0_qp - 2.0_qp*sqrt(2.0_qp))
     end subroutine test_map_p4
+
+    !> The rate map of collapse cycle `cycle` of p equal spheres finds its e_c
+    !> within closed_tol of the closed form `closed`, searched near it.
+    subroutine check_rate_map(error, p, cycle, closed)
+        type(error_t), allocatable, intent(inout) :: error
+        integer, intent(in) :: p, cycle(:)
+        real(qp), intent(in) :: closed
+        real(qp), parameter :: window = 1.0e-3_qp, probe = 1.0e-8_qp
+        real(qp) :: e_c, m(p)
+        integer :: stat
+        m = 1.0_qp
+        call rate_map_critical(m, cycle, closed - window, closed + window, probe, e_c, stat)
+        call check(error, stat == status_normal, "p = "//itoa(p)//": no sign change of the pair")
+        if (allocated(error)) return
+        call check(error, abs(e_c - closed) <= closed_tol, "p = "//itoa(p)//": e_c = "//str(e_c))
+    end subroutine check_rate_map
 
     !> The whole row procedure for p = 3 and 4: the rate map found from the
     !> row's own run matches the closed form, and the bisected bracket

@@ -278,25 +278,29 @@ contains
         integer :: stat
         character(len=200) :: msg
         call scene_init(scene, stat, msg)
-        call monte_carlo_v4(scene, 0.5_qp, 0.05_qp, 0, 1, v4, e, counts, stat, msg)
-        call check(error, stat == status_invalid .and. index(msg, "seed = 0") > 0, &
-            "seed 0 not refused: "//trim(msg))
-        call monte_carlo_v4(scene, 0.5_qp, 0.05_qp, 1, 0, v4, e, counts, stat, msg)
-        call check(error, stat == status_invalid .and. index(msg, "first = 0") > 0, &
-            "first 0 not refused: "//trim(msg))
+        call expect_refused(0.5_qp, 0.05_qp, 0, 1, e, "seed = 0", "seed 0")
+        call expect_refused(0.5_qp, 0.05_qp, 1, 0, e, "first = 0", "first 0")
         call sampler%seed(1, stat, msg)
         call check(error, sampler%seeded(), "seeded sampler reports unseeded")
-        call monte_carlo_v4(scene, 5.0_qp, 0.05_qp, 1, 1, v4, e, counts, stat, msg)
-        call check(error, stat == status_invalid .and. index(msg, "mean = 5") > 0, &
-            "mean 5 not refused: "//trim(msg))
-        call monte_carlo_v4(scene, 0.5_qp, 0.0_qp, 1, 1, v4, e, counts, stat, msg)
-        call check(error, stat == status_invalid .and. index(msg, "sd = 0") > 0, &
-            "sd 0 not refused: "//trim(msg))
-        call monte_carlo_v4(scene, 0.5_qp, 0.05_qp, 1, 1, v4, e_short, counts, stat, msg)
-        call check(error, stat == status_invalid .and. index(msg, "e_samples") > 0, &
-            "short e_samples not refused: "//trim(msg))
+        call expect_refused(5.0_qp, 0.05_qp, 1, 1, e, "mean = 5", "mean 5")
+        call expect_refused(0.5_qp, 0.0_qp, 1, 1, e, "sd = 0", "sd 0")
+        call expect_refused(0.5_qp, 0.05_qp, 1, 1, e_short, "e_samples", "short e_samples")
         call sampler%release()
         call check(error, .not. sampler%seeded(), "released sampler reports seeded")
+
+    contains
+
+        !> monte_carlo_v4 with these settings is refused, `expect` in its message.
+        subroutine expect_refused(mean, sd, seed, first, e_samples, expect, what)
+            real(qp), intent(in) :: mean, sd
+            integer, intent(in) :: seed, first
+            real(dp), intent(out) :: e_samples(:)
+            character(len=*), intent(in) :: expect, what
+            call monte_carlo_v4(scene, mean, sd, seed, first, v4, e_samples, counts, stat, msg)
+            call check(error, stat == status_invalid .and. index(msg, expect) > 0, &
+                what//" not refused: "//trim(msg))
+        end subroutine expect_refused
+
     end subroutine test_refusals
 
     !> 400 runs of the definition's row: each v4 is the closed form rounded to

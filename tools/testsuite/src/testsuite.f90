@@ -5,6 +5,7 @@ module testsuite
     implicit none
     private
     public :: error_t, unittest_t, test_proc, new_unittest, check, run_tests
+    public :: read_text, count_lines, seed_random
 
     !> A failed check: its message.
     type :: error_t
@@ -67,4 +68,41 @@ contains
             end if
         end do
     end subroutine run_tests
+
+    !> The whole text of `file`, each line ended by a new line and trailing
+    !> blanks dropped; "" if the file cannot be read.
+    function read_text(file) result(text)
+        character(len=*), intent(in) :: file
+        character(len=:), allocatable :: text
+        character(len=8000) :: line
+        integer :: unit, ios
+        text = ""
+        open (newunit=unit, file=file, status="old", action="read", iostat=ios)
+        if (ios /= 0) return
+        do
+            read (unit, "(a)", iostat=ios) line
+            if (ios /= 0) exit
+            text = text//trim(line)//new_line("a")
+        end do
+        close (unit)
+    end function read_text
+
+    !> The lines of `text`: its new-line characters.
+    pure integer function count_lines(text)
+        character(len=*), intent(in) :: text
+        integer :: i
+        count_lines = 0
+        do i = 1, len(text)
+            if (text(i:i) == new_line("a")) count_lines = count_lines + 1
+        end do
+    end function count_lines
+
+    !> Seed the intrinsic generator with first + step*i, i = 1 ... its seed
+    !> size, so that a test's random cases are the same on every run.
+    subroutine seed_random(first, step)
+        integer, intent(in) :: first, step
+        integer :: n, i
+        call random_seed(size=n)
+        call random_seed(put=[(first + step*i, i=1, n)])
+    end subroutine seed_random
 end module testsuite
