@@ -48,6 +48,7 @@ contains
             call to_dp(scene, low)
             call certified_dp(low, run_low, bounds_low)
             auto%why_not_dp = bounds_low%why
+            if (bounds_low%certified) bounds_low%certified = finite(run_low, bounds_low)
             if (bounds_low%certified) then
                 call from_dp(run_low, run)
                 auto%answered = "dp"
@@ -63,6 +64,16 @@ contains
         if (auto%certified) auto%v_bound = maxval(bounds%v)
     end subroutine simulate_auto
 
+    !> Every result and bound of a real64 run is finite.
+    pure logical function finite(run, bounds)
+        type(run_dp_t), intent(in) :: run
+        type(bounds_dp_t), intent(in) :: bounds
+        real(dp), parameter :: top = huge(1.0_dp)
+        finite = all(abs(run%v) <= top) .and. all(abs(run%x) <= top) .and. &
+            all(abs(run%y) <= top) .and. abs(run%t_end) <= top .and. &
+            all(bounds%v <= top) .and. all(bounds%x <= top)
+    end function finite
+
     !> Run `scene` in real64 with the engine's full rules (no certificate);
     !> `run` holds the answer in real128.
     subroutine simulate_in_dp(scene, run)
@@ -75,14 +86,25 @@ contains
         call from_dp(run_low, run)
     end subroutine simulate_in_dp
 
-    !> Every value of the scene is a finite real64 (a tolerance below real64's
-    !> range becomes 0, which decides the same for every rate real64 can hold).
+    !> Every value of the scene, and the sums the engine forms of them (mass
+    !> pairs, the row's length, its time scale), is a finite real64, and every
+    !> nonzero one is in real64's normal range, where rounding to it is a
+    !> relative error of at most u (a tolerance below that range becomes 0,
+    !> which decides the same for every rate real64 can hold).
     pure logical function fits_dp(scene)
         type(scene_t), intent(in) :: scene
-        real(qp), parameter :: top = real(huge(1.0_dp), qp)
-        fits_dp = scene%d <= top .and. scene%v0 <= top .and. all(scene%m <= top) .and. &
-            all(scene%a <= top) .and. scene%v0 >= real(tiny(1.0_dp), qp) .and. &
-            all(scene%m >= real(tiny(1.0_dp), qp))
+        real(qp), parameter :: top = real(huge(1.0_dp), qp), low = real(tiny(1.0_dp), qp)
+        real(qp) :: length
+        length = scene%p*scene%d + sum(scene%a)
+        fits_dp = 2*maxval(scene%m) <= top .and. length <= top .and. &
+            scene%v0 <= top .and. scene%v0 >= low .and. all(scene%m >= low) .and. &
+            length/scene%v0 <= top .and. normal(scene%d) .and. normal(scene%e) .and. &
+            all(scene%a == 0.0_qp .or. scene%a >= low)
+    contains
+        pure logical function normal(x)
+            real(qp), intent(in) :: x
+            normal = x == 0.0_qp .or. x >= low
+        end function normal
     end function fits_dp
 
     !> The scene rounded to real64.

@@ -26,7 +26,8 @@ contains
         type(unittest_t), allocatable :: tests(:)
         tests = [ &
             new_unittest("auto_e_0172_as_real128", test_near_critical), &
-            new_unittest("auto_equals_real128_on_1e4_values", test_many_values) &
+            new_unittest("auto_equals_real128_on_1e4_values", test_many_values), &
+            new_unittest("auto_at_extreme_scales", test_extreme_scales) &
             ]
     end function collect_auto
 
@@ -94,6 +95,45 @@ contains
         end do
         call check(error, tried >= 10000, "fewer than 10^4 scenes: "//itoa(tried))
     end subroutine test_many_values
+
+    !> Scales at and beyond real64's range (closed gaps, gaps below its normal
+    !> range, huge or tiny masses, lengths and speeds): auto must still give
+    !> real128's count and status, and real64's velocities within their own
+    !> bounds where it answers.
+    subroutine test_extreme_scales(error)
+        type(error_t), allocatable, intent(out) :: error
+        real(qp), parameter :: gap_choices(6) = [0.0_qp, 1.0e-400_qp, 1.0e-300_qp, 1.0_qp, &
+            1.0e300_qp, 1.0e308_qp]
+        real(qp), parameter :: scale_choices(5) = [1.0e-300_qp, 1.0e-9_qp, 1.0_qp, 1.0e9_qp, &
+            1.0e307_qp]
+        type(scene_t) :: scene
+        type(run_t) :: ref, run
+        type(auto_t) :: auto
+        real(qp) :: u(30)
+        integer :: i, j, p, stat
+        character(len=200) :: msg
+        call random_seed(put=[(4099 + 5*i, i=1, 64)])
+        do i = 1, 400
+            call random_number(u)
+            p = 2 + int(5*u(1))
+            call scene_init(scene, stat, msg, p=p, e=u(2), max_collisions=cap, &
+                v0=scale_choices(1 + int(5*u(3))), &
+                masses=[(scale_choices(1 + int(5*u(3 + j))), j=1, p)], &
+                gaps=[(gap_choices(1 + int(6*u(10 + j))), j=1, p - 1)])
+            if (stat /= 0) cycle
+            call simulate(scene, ref)
+            if (ref%status /= 0 .and. ref%status /= 1) cycle
+            call simulate_auto(scene, run, auto)
+            call check(error, run%n == ref%n .and. run%status == ref%status, &
+                "extreme scales: count or status differs, row "//itoa(i))
+            if (allocated(error)) return
+            if (auto%answered /= "dp") cycle
+            call check(error, all(abs(run%v - ref%v) <= auto%v_bound + &
+                64*epsilon(1.0_qp)*maxval(abs(ref%v))), &
+                "extreme scales: velocities beyond the bound, row "//itoa(i))
+            if (allocated(error)) return
+        end do
+    end subroutine test_extreme_scales
 
     !> Every change of the collision count n(e) on a scan of e (p = 4, equal
     !> masses), each bisected to 1e-15.
