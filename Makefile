@@ -45,11 +45,13 @@ METHODS := $(RESULTS)/methods_work_precision.tsv $(RESULTS)/methods_stability.ts
 COLLAPSE := $(RESULTS)/collapse_survey.tsv $(RESULTS)/collapse_by_p.tsv \
       $(RESULTS)/collapse_answers.tsv
 ECRIT := $(RESULTS)/ecrit.tsv $(RESULTS)/ecrit_answers.tsv
-TABLES := $(A1) $(A2) $(B1) $(B2) $(C1) $(C2) $(METHODS) $(COLLAPSE) $(ECRIT)
+# machine-dependent timings (like bench.tsv): not compared by check-results
+COST := $(RESULTS)/cost.tsv $(RESULTS)/cost_summary.tsv
+TABLES := $(A1) $(A2) $(B1) $(B2) $(C1) $(C2) $(METHODS) $(COLLAPSE) $(ECRIT) $(COST)
 ANSWERS := $(filter %_answers.tsv,$(TABLES))
 
 FIGURES := a1_paths b1_n b1_critical b2_velocities c1_secant c2_ecdf c2_histogram collapse_by_p \
-           c2_convergence ecrit
+           c2_convergence ecrit cost
 PNG := $(FIGURES:%=$(RESULTS)/%.png) $(RESULTS)/methods_work_precision.png \
        $(RESULTS)/methods_stability.png
 SVG := $(FIGURES:%=$(RESULTS)/%.svg) $(RESULTS)/methods_work_precision.svg \
@@ -149,6 +151,8 @@ $(METHODS) &: $(BUILD_STAMP)
 	$(call study_run,c12-methods)
 $(ECRIT) &: $(BUILD_STAMP)
 	$(call study_run,c12-ecrit)
+$(COST) &: $(BUILD_STAMP)
+	$(call study_run,c12-cost)
 
 $(RESULTS)/answers.tsv $(RESULTS)/summary.md &: $(ANSWERS) $(BUILD_STAMP)
 	$(BIN)/c12-summary out=$(RESULTS)
@@ -172,6 +176,7 @@ $(RESULTS)/collapse_by_p.png $(RESULTS)/collapse_by_p.svg: $(COLLAPSE)
 $(RESULTS)/c2_histogram.png $(RESULTS)/c2_histogram.svg: $(C2)
 $(RESULTS)/c2_convergence.png $(RESULTS)/c2_convergence.svg: $(C2)
 $(RESULTS)/ecrit.png $(RESULTS)/ecrit.svg: $(ECRIT)
+$(RESULTS)/cost.png $(RESULTS)/cost.svg: $(COST)
 
 # the methods' scripts write both formats in one run
 $(RESULTS)/methods_work_precision.png $(RESULTS)/methods_work_precision.svg &: \

@@ -131,16 +131,36 @@ contains
                 run%collapse_first, run%collapse_last
             write (output_unit, "(a, 1x, a)") "collapse_t", str(run%collapse_t)
         end if
-        do i = 1, scene%p
-            write (output_unit, "('v', i0, 1x, a)") i, str(run%v(i))
-        end do
-        do i = 1, scene%p
-            write (output_unit, "('x', i0, 1x, a)") i, str(run%x(i))
-        end do
-        do i = 1, scene%p - 1
-            write (output_unit, "('y', i0, 1x, a)") i, str(run%y(i))
-        end do
+        call write_numbered("v", run%v)
+        call write_numbered("x", run%x)
+        call write_numbered("y", run%y)
     end subroutine write_run
+
+    !> Lines `<name><i> <values(i)>`, written a block of lines at a time (one
+    !> write per line would be one system call per line in a row of 10^6).
+    subroutine write_numbered(name, values)
+        character(len=*), intent(in) :: name
+        real(qp), intent(in) :: values(:)
+        integer, parameter :: block = 65536
+        character(len=block) :: buf
+        character(len=:), allocatable :: line
+        integer :: i, at
+        at = 0
+        do i = 1, size(values)
+            line = name//itoa(i)//" "//str(values(i))
+            if (at > 0 .and. at + 1 + len(line) > block) then
+                write (output_unit, "(a)") buf(:at)
+                at = 0
+            end if
+            if (at > 0) then
+                buf(at + 1:at + 1) = new_line("a")
+                at = at + 1
+            end if
+            buf(at + 1:at + len(line)) = line
+            at = at + len(line)
+        end do
+        if (at > 0) write (output_unit, "(a)") buf(:at)
+    end subroutine write_numbered
 
     !> The event record as TSV, one header row naming each column and its unit
     !> (L: the unit of d and a; V: the unit of v0).

@@ -19,9 +19,7 @@ contains
     pure function itoa_default(i) result(s)
         integer, intent(in) :: i
         character(len=:), allocatable :: s
-        character(len=24) :: buf
-        write (buf, "(i0)") i
-        s = trim(buf)
+        s = itoa_int64(int(i, int64))
     end function itoa_default
 
     !> Text of a 64-bit integer (counts, fingerprints).
@@ -29,8 +27,27 @@ contains
         integer(int64), intent(in) :: i
         character(len=:), allocatable :: s
         character(len=24) :: buf
-        write (buf, "(i0)") i
-        s = trim(buf)
+        integer(int64) :: rest
+        integer :: at
+        ! digits from the right, without formatted I/O (it is called per
+        ! line of long outputs); the most negative value has no positive twin
+        if (i == -huge(i) - 1) then
+            s = "-9223372036854775808"
+            return
+        end if
+        rest = abs(i)
+        at = len(buf) + 1
+        do
+            at = at - 1
+            buf(at:at) = achar(iachar("0") + int(mod(rest, 10_int64)))
+            rest = rest/10
+            if (rest == 0) exit
+        end do
+        if (i < 0) then
+            at = at - 1
+            buf(at:at) = "-"
+        end if
+        s = buf(at:)
     end function itoa_int64
 
     !> `x` (converted exactly to real128) written with `digits` significant
@@ -50,11 +67,10 @@ contains
             str = trim(str)
             return
         end if
+        ! two exponent digits unless |log10 |x|| >= 99
         ew = 2
-        if (x /= 0.0_qp) then
-            if (abs(log10(abs(x))) >= 99.0_qp) ew = 4
-        end if
-        write (form, "('(es', i0, '.', i0, 'e', i0, ')')") digits + ew + 8, digits - 1, ew
+        if (x /= 0.0_qp .and. (abs(x) >= 1.0e99_qp .or. abs(x) <= 1.0e-99_qp)) ew = 4
+        form = "(es"//itoa(digits + ew + 8)//"."//itoa(digits - 1)//"e"//itoa(ew)//")"
         write (buf, form) x
         str = trim(adjustl(buf))
     end function real_str

@@ -1,5 +1,5 @@
 !> The scene keys shared by the `sphere-row` CLI and the study programs (p, e,
-!> d, a, gaps, v0, masses, tol, max_collisions) on the key registry of
+!> d, a, gaps, v0, masses, tol, max_collisions, calendar_from) on the key registry of
 !> `sphere_row_cli`, and the scene they give, refused where its scales do not
 !> fit in real(16).
 module sphere_row_scene_keys
@@ -61,6 +61,9 @@ contains
             shown=short_text(defaults%tol, 3), in_file=.true.)
         call cli%add_int("max_collisions", itoa(defaults%max_collisions), &
             "safety net: a run ends after this many collisions", lo=1, in_file=.true.)
+        call cli%add_int("calendar_from", itoa(defaults%calendar_from), "rows of at least " &
+            //"this many spheres take the next impact from a calendar (a heap), shorter " &
+            //"rows scan every gap", lo=2, in_file=.true.)
     end subroutine add_scene_keys
 
     !> The scene the scene keys of `cli` describe. Beyond each key's own range,
@@ -110,6 +113,7 @@ contains
             v0=cli%get_real("v0"), tol=cli%get_real("tol"), &
             max_collisions=cli%get_int("max_collisions"), masses=masses, gaps=gaps)
         if (stat /= status_normal) call fatal_error(error, trim(msg))
+        scene%calendar_from = cli%get_int("calendar_from")
     end subroutine scene_from_cli
 
     !> Refuse a scene whose length, time, velocity or position scale is not

@@ -4,6 +4,7 @@ program check
     use testsuite, only: run_tests
     use test_engine, only: collect_engine
     use test_collapse, only: collect_collapse
+    use test_calendar, only: collect_calendar
     use test_auto, only: collect_auto
     use test_cli, only: collect_cli
     use test_front, only: collect_front
@@ -13,6 +14,7 @@ program check
     failed = 0
     call run_tests("engine", collect_engine(), passed, failed)
     call run_tests("collapse", collect_collapse(), passed, failed)
+    call run_tests("calendar", collect_calendar(), passed, failed)
     call run_tests("auto", collect_auto(), passed, failed)
     call run_tests("front", collect_front(), passed, failed)
     call run_tests("cli", collect_cli(), passed, failed)
