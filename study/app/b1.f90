@@ -33,6 +33,16 @@ program c12_b1
     integer, allocatable :: n_scan_runs(:), status_scan(:)
     integer(8), allocatable :: class_scan(:)
     integer(8) :: class_mid
+    !> A thread's own scene, run and log for the bisections of step 2.
+    type(scene_t) :: thread_scene
+    type(run_t) :: thread_run
+    type(event_log_t) :: thread_events
+    integer, allocatable :: thread_pairs(:)
+    !$omp threadprivate(thread_scene, thread_run, thread_events, thread_pairs)
+    !> The changes found in one interval of the scan.
+    type :: found_t
+        real(qp), allocatable :: e(:)
+    end type found_t
 
     call define_keys()
     call read_keys(cli, scene)
@@ -93,18 +103,37 @@ contains
     end subroutine scan
 
     !> Step 2: every change of (n, sequence) between neighbours of the scan,
-    !> bisected to `resolution`, in increasing order.
+    !> bisected to `resolution`, in increasing order. The intervals are
+    !> independent: they are bisected in parallel (OpenMP), each thread on its
+    !> own scene and run, and their changes joined in the scan's order.
     subroutine find_changes()
+        type(found_t), allocatable :: found(:)
+        integer :: i
+        allocate (found(n_scan - 1))
+        !$omp parallel do schedule(dynamic, 1) default(shared) private(i)
+        do i = 1, n_scan - 1
+            allocate (found(i)%e(0))
+            if (class_scan(i) == class_scan(i + 1)) cycle
+            if (min(n_scan_runs(i), n_scan_runs(i + 1)) > n_bisect_max) cycle
+            thread_scene = scene
+            call bisect_changes(class_in_thread, e_scan(i + 1), e_scan(i), class_scan(i + 1), &
+                class_scan(i), resolution, found(i)%e)
+        end do
+        !$omp end parallel do
         allocate (boundaries(0))
-        do j = 1, n_scan - 1
-            if (class_scan(j) == class_scan(j + 1)) cycle
-            if (min(n_scan_runs(j), n_scan_runs(j + 1)) > n_bisect_max) cycle
-            call bisect_changes(class_of, e_scan(j + 1), e_scan(j), class_scan(j + 1), &
-                class_scan(j), resolution, boundaries)
+        do i = 1, n_scan - 1
+            boundaries = [boundaries, found(i)%e]
         end do
         n_boundaries = size(boundaries)
         call sort(boundaries)
     end subroutine find_changes
+
+    !> The class of the run at e on the calling thread's own scene and run.
+    function class_in_thread(e) result(class)
+        real(qp), intent(in) :: e
+        integer(8) :: class
+        call classify_with(e, thread_scene, thread_run, thread_events, thread_pairs, class)
+    end function class_in_thread
 
     !> Step 3: the critical restitution by simulation alone, with a tolerance
     !> near the bottom of real128's range: bisect finite against collapsed.
