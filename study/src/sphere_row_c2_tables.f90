@@ -10,7 +10,8 @@ module sphere_row_c2_tables
     use sphere_row_monte_carlo, only: mc_counts_t, normal_mass_outside_unit, normal_cdf, &
         normal_density, sample_moments, normal_quantile, mean_ci_half_width, sort_values, &
         sorted_quantile, ks_distance, cubic_law_applies, cubic_law_mean, cubic_law_sd, &
-        cubic_law_quantile, cubic_law_cdf, cubic_law_density, cubic_law_v4, single_impact_bound
+        cubic_law_quantile, cubic_law_cdf, cubic_law_density, cubic_law_v4, single_impact_bound, &
+        cubic_law_cdf_all
     use sphere_row_tables, only: tab
     use sphere_row_error, only: error_t, fatal_error, error_io
     implicit none
@@ -66,6 +67,7 @@ contains
         type(c2_sample_t), intent(inout) :: c
         type(scene_t), intent(in) :: scene
         type(error_t), allocatable, intent(out) :: error
+        real(dp), allocatable :: cdf(:)
         allocate (c%work(c%nmax))
         call sample_moments(c%v4(:c%n), c%v_mean, c%v_sd)
         call sample_moments(c%e(:c%n), c%e_mean, c%e_sd)
@@ -77,7 +79,11 @@ contains
         c%q975 = sorted_quantile(c%work(:c%n), 0.975_dp)
         c%exact = cubic_law_applies(scene)
         c%ks = -1.0_dp
-        if (c%exact) c%ks = ks_distance(cubic_law_cdf(c%work(:c%n), c%mean, c%sd, c%v0))
+        if (c%exact) then
+            allocate (cdf(c%n))
+            call cubic_law_cdf_all(c%work(:c%n), c%mean, c%sd, c%v0, cdf)
+            c%ks = ks_distance(cdf)
+        end if
         c%redraws_expected = c%n*real(normal_mass_outside_unit(c%mean, c%sd), qp) &
             /(1.0_qp - real(normal_mass_outside_unit(c%mean, c%sd), qp))
         if (c%exact) call c2_check_closed_form(c, scene, error)
@@ -107,7 +113,7 @@ contains
             call fatal_error(error, trim(msg))
             return
         end if
-        c%outside = count(c%e(:c%n) < c%bound)
+        c%outside = count_below(c%e(:c%n), c%bound)
         inside = 1.0_qp - real(normal_mass_outside_unit(c%mean, c%sd), qp)
         c%outside_expected = c%n*(real(normal_cdf(real(c%bound, dp), c%mean, c%sd), qp) &
             - real(normal_cdf(0.0_dp, c%mean, c%sd), qp))/inside
@@ -145,6 +151,22 @@ contains
             end if
         end do
     end subroutine c2_check_closed_form
+
+    !> How many of the doubles x lie below the real(16) number b, compared in
+    !> double: with b_d the double nearest b, x < b if and only if x < b_d
+    !> where b_d >= b, and x <= b_d where b_d < b (no double lies between b
+    !> and b_d).
+    pure integer function count_below(x, b) result(below)
+        real(dp), intent(in) :: x(:)
+        real(qp), intent(in) :: b
+        real(dp) :: b_d
+        b_d = real(b, dp)
+        if (real(b_d, qp) >= b) then
+            below = count(x < b_d)
+        else
+            below = count(x <= b_d)
+        end if
+    end function count_below
 
     !> Open every table first, so that a directory that cannot be written is
     !> refused before anything is in it; then write them. `error` names the

@@ -35,6 +35,7 @@ module sphere_row_monte_carlo
     public :: ks_distance
     public :: cubic_law_applies, cubic_law_mean, cubic_law_sd, cubic_law_quantile
     public :: cubic_law_cdf, cubic_law_density, cubic_law_v4, single_impact_bound
+    public :: cubic_law_cdf_all
 
     !> Smallest share of the normal law that must lie in [0, 1]: samples outside
     !> are drawn again, so a smaller share would multiply the cost (by up to
@@ -598,6 +599,25 @@ contains
         p = gsl_cdf_ugaussian_p(standard_score(v, m, s, v0))
     end function cubic_law_cdf
 
+    !> cubic_law_cdf at every value of v, into p (of the same size): the law's
+    !> parameters converted to double once, the values shared among threads
+    !> (each p(i) is the same for any number of them).
+    subroutine cubic_law_cdf_all(v, m, s, v0, p)
+        real(dp), intent(in) :: v(:)
+        real(qp), intent(in) :: m, s, v0
+        real(dp), intent(out) :: p(:)
+        real(dp) :: m_d, s_d, v0_d
+        integer :: i
+        m_d = real(m, dp)
+        s_d = real(s, dp)
+        v0_d = real(v0, dp)
+        !$omp parallel do schedule(static) default(shared) private(i)
+        do i = 1, size(v)
+            p(i) = gsl_cdf_ugaussian_p(score(v(i), m_d, s_d, v0_d))
+        end do
+        !$omp end parallel do
+    end subroutine cubic_law_cdf_all
+
     !> Density of v0 ((1+e)/2)^3, e ~ N(m, s^2): phi(z) dz/dv with
     !> z = (2 (v/v0)^(1/3) - 1 - m)/s, dz/dv = 2 (v/v0)^(-2/3) / (3 s v0).
     elemental function cubic_law_density(v, m, s, v0) result(f)
@@ -619,11 +639,18 @@ contains
         real(dp), intent(in) :: v
         real(qp), intent(in) :: m, s, v0
         real(dp) :: z
+        z = score(v, real(m, dp), real(s, dp), real(v0, dp))
+    end function standard_score
+
+    !> standard_score with the law's parameters as doubles.
+    elemental function score(v, m, s, v0) result(z)
+        real(dp), intent(in) :: v, m, s, v0
+        real(dp) :: z
         real(dp) :: r
         r = 0.0_dp
-        if (v > 0.0_dp) r = (v/real(v0, dp))**(1.0_dp/3.0_dp)
-        z = (2.0_dp*r - 1.0_dp - real(m, dp))/real(s, dp)
-    end function standard_score
+        if (v > 0.0_dp) r = (v/v0)**(1.0_dp/3.0_dp)
+        z = (2.0_dp*r - 1.0_dp - m)/s
+    end function score
 
     !> The smallest e in [e_lo, e_hi], to real128 resolution, above which the
     !> last sphere is struck exactly once: bisection on that property of the
