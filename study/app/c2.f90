@@ -2,7 +2,9 @@
 !> normally distributed (mean 0.5, standard deviation 0.05); the distribution
 !> of the final velocity v4 of the last sphere, its mean, standard deviation,
 !> the 95 % confidence interval of the mean and the 95 % interval of v4 itself,
-!> from a Monte Carlo of the row in real(16).
+!> from a Monte Carlo of the row in real(16): with precision=auto (the
+!> default) each run is made in real(64) where a rounding certificate shows
+!> that it takes real(16)'s decisions, and again in real(16) where not.
 !>
 !> One stream of nmax samples is drawn; the main answers are the statistics of
 !> its first n samples and the convergence table takes the prefixes
@@ -57,6 +59,7 @@ program c12_c2
     c%mean = cli%get_real("mean")
     c%sd = cli%get_real("sd")
     c%bins = cli%get_int("bins")
+    c%precision = cli%get_word("precision")
     c%v0 = scene%v0
     call check_settings()
 
@@ -80,12 +83,15 @@ contains
         call system_clock(clock0, clock_rate)
         clock_shown = clock0
         call monte_carlo_v4(scene, c%mean, c%sd, c%seed, 1, c%v4(:c%n), c%e(:c%n), c%counts, &
-            stat, msg, progress=show_progress)
+            stat, msg, progress=show_progress, auto=c%precision == "auto")
         call stop_unless_normal(stat, msg)
+        c%escalated_nmax = c%counts%escalated
         if (c%nmax > c%n) then
             call monte_carlo_v4(scene, c%mean, c%sd, c%seed, c%n + 1, c%v4(c%n + 1:), &
-                c%e(c%n + 1:), counts_rest, stat, msg, progress=show_progress)
+                c%e(c%n + 1:), counts_rest, stat, msg, progress=show_progress, &
+                auto=c%precision == "auto")
             call stop_unless_normal(stat, msg)
+            c%escalated_nmax = c%escalated_nmax + counts_rest%escalated
         end if
         call system_clock(clock1)
         if (shown) write (error_unit, "(a)") ""
@@ -115,7 +121,8 @@ contains
         call start_program(cli, name, &
             "Task c2 of ARGESIM Comparison 12: e ~ N(mean, sd^2), drawn by Box-Muller"//nl// &
             "from GSL's MT19937 and truncated to 0 <= e <= 1 (draws outside are drawn"//nl// &
-            "again and counted); each row is run in real(16). Writes c2_answers.tsv,"//nl// &
+            "again and counted); each row is run in real(16), or with precision=auto in"//nl// &
+            "real(64) where a rounding certificate holds. Writes c2_answers.tsv,"//nl// &
             "c2_ecdf.tsv, c2_histogram.tsv and c2_convergence.tsv into the directory out.")
         call cli%add_int("n", "1000000", "main sample size", lo=n_least, hi=n_most)
         call cli%add_int("nmax", "", "largest N of the convergence table (rows 10^2, 10^3," &
@@ -124,14 +131,19 @@ contains
         call cli%add_real("mean", "0.5", "mean of e; at least 10 % of the law in [0, 1]")
         call cli%add_real("sd", "0.05", "standard deviation of e", lo=0.0_qp, lo_open=.true.)
         call cli%add_int("bins", "100", "histogram bins", lo=1, hi=bins_most)
+        call cli%add_word("precision", "auto", "auto: real(8) where a rounding certificate" &
+            //" holds, else real(16); qp: real(16) for every run")
         call add_scene_keys(cli, e_set_by="the normal law of e")
     end subroutine define_keys
 
-    !> What the keys' own ranges cannot say: nmax >= n, and enough of the law
-    !> of e inside [0, 1] for the truncation to draw again rarely.
+    !> What the keys' own ranges cannot say: nmax >= n, the precision's name,
+    !> and enough of the law of e inside [0, 1] for the truncation to draw
+    !> again rarely.
     subroutine check_settings()
         if (c%nmax < c%n) call fail("nmax = "//cli%get_text("nmax")//": allowed an integer " &
             //"n <= nmax <= "//itoa(n_most)//" (n = "//itoa(c%n)//")")
+        if (c%precision /= "auto" .and. c%precision /= "qp") call fail("precision = " &
+            //c%precision//": allowed auto or qp")
         if (.not. (1.0_dp - normal_mass_outside_unit(c%mean, c%sd) >= min_acceptance)) then
             call fail("mean = "//cli%get_text("mean")//", sd = "//cli%get_text("sd") &
                 //": under 10 % of the normal law lies in 0 <= e <= 1; allowed at least 10 %")

@@ -103,7 +103,8 @@ contains
             [character(len=60) :: "c2_ecdf", "c2_histogram", "c2_convergence"], &
             "e ~ N("//short("c2", "c2.e_mean", check_value)//", "// &
             short("c2", "c2.e_sd", check_value)//") by Box-Muller from GSL's mt19937 "// &
-            "uniforms (seeded), one real(16) run per sample. Where sphere 4 is hit once "// &
+            "uniforms (seeded), one run per sample "//c2_precision()//". Where sphere 4 "// &
+            "is hit once "// &
             "(all but about "//outside_share()//" of the mass of this law) "// &
             "v4 = v0 ((1+e)/2)^3 is monotone in e, so its exact law is "// &
             "P(v4 <= v) = Phi((2 (v/v0)^(1/3) - 1 - m)/s), with mean "// &
@@ -221,6 +222,17 @@ contains
         read (text, *, iostat=ios) x
         if (ios == 0) text = short_text(x, digits)
     end function short
+
+    !> The precision of c2's runs, in words: real(16), or (precision auto)
+    !> real(64) where certified and the count escalated to real(16).
+    function c2_precision() result(text)
+        character(len=:), allocatable :: text
+        text = "in real(16)"
+        if (field("c2", "c2.precision") /= "auto") return
+        text = "in real(64) where a rounding certificate shows that it takes real(16)'s "// &
+            "decisions, else again in real(16) ("//field("c2", "c2.escalated")//" of "// &
+            field("c2", "c2.n")//" escalated)"
+    end function c2_precision
 
     !> The share of the law of e outside the range where sphere 4 is struck
     !> once, from c2's expected count of such draws in its sample, to one digit.

@@ -4,7 +4,10 @@
 !> e is drawn from a normal law by the Box–Muller transform of MT19937
 !> uniforms from GSL, as a double; each draw is converted exactly to real128
 !> and the row is run in real128 (the lean path of sphere_row_lean where the
-!> scene allows). The final velocity of the last sphere is kept as a double:
+!> scene allows), or with precision auto in real64 where a rounding
+!> certificate shows that real64 takes real128's decisions (sphere_row_lean's
+!> certified run; the engine's simulate_auto for other rows), else in
+!> real128 (escalated). The final velocity of the last sphere is kept as a double:
 !> the statistics have widths of order 1e-4 of v0, so digits beyond a double's
 !> carry no information; for the same reason the statistics themselves (sums,
 !> sort) are taken in double, off the critical path (see sample_moments).
@@ -16,7 +19,8 @@ module sphere_row_monte_carlo
     use, intrinsic :: iso_fortran_env, only: int64
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
     use sphere_row, only: dp, qp, scene_t, run_t, event_log_t, scene_check, simulate, &
-        status_normal, status_collapsed, status_invalid, event_collision, str, real_str
+        status_normal, status_collapsed, status_invalid, event_collision, str, real_str, &
+        auto_t, simulate_auto
     use sphere_row_lean, only: lean_row_t
     use sphere_row_sorting, only: radix_sort
     use sphere_row_gsl, only: gsl_rng_mt19937, gsl_rng_alloc, gsl_rng_set, gsl_rng_uniform_pos, &
@@ -31,6 +35,7 @@ module sphere_row_monte_carlo
     public :: ks_distance
     public :: cubic_law_applies, cubic_law_mean, cubic_law_sd, cubic_law_quantile
     public :: cubic_law_cdf, cubic_law_density, cubic_law_v4, single_impact_bound
+    public :: cubic_law_cdf_all
 
     !> Smallest share of the normal law that must lie in [0, 1]: samples outside
     !> are drawn again, so a smaller share would multiply the cost (by up to
@@ -83,6 +88,11 @@ module sphere_row_monte_carlo
         !> Runs stopped by the scene's max_collisions (v4 is then the value
         !> after the last collision computed); expected 0.
         integer(int64) :: incomplete = 0
+        !> With precision auto: runs whose real(64) certificate failed, run
+        !> again in real(16) (escalated), and the largest bound on
+        !> |v4 - v4 in real(16)| of the others [v0 units].
+        integer(int64) :: escalated = 0
+        real(dp) :: bound_max = 0.0_dp
     end type mc_counts_t
 
     abstract interface
@@ -214,10 +224,15 @@ contains
     !>
     !> The runs take the lean path of sphere_row_lean (the engine's v4, bit for
     !> bit, at a fraction of its cost) where the scene is of its family, unless
-    !> `lean` is false; otherwise the engine. `progress`, if present, is called
-    !> (by one thread at a time) after each block with the samples done.
+    !> `lean` is false; otherwise the engine. With `auto` true, each run is
+    !> first made in real64 with a rounding certificate and made again in
+    !> real128 only where the certificate fails (counted in
+    !> `counts%escalated`): the collision sequence and count are real128's,
+    !> and v4 lies within `counts%bound_max` of real128's. `progress`, if
+    !> present, is called (by one thread at a time) after each block with the
+    !> samples done.
     subroutine monte_carlo_v4(scene, mean, sd, seed, first, v4, e_samples, counts, stat, msg, &
-        lean, progress)
+        lean, progress, auto)
         type(scene_t), intent(in) :: scene
         real(qp), intent(in) :: mean, sd
         integer, intent(in) :: seed, first
@@ -225,52 +240,22 @@ contains
         type(mc_counts_t), intent(out) :: counts
         integer, intent(out) :: stat
         character(len=*), intent(out) :: msg
-        logical, intent(in), optional :: lean
+        logical, intent(in), optional :: lean, auto
         procedure(progress_report), optional :: progress
         type(mc_counts_t), allocatable :: block_counts(:)
         type(lean_row_t) :: probe
         real(dp) :: mean_d, sd_d
-        real(dp) :: mass
         integer(int64) :: done, total
         integer :: b, b_first, b_last, last
-        logical :: use_lean, report
+        logical :: use_lean, use_auto, report
 
-        call scene_check(scene, stat, msg)
-        if (stat /= status_normal) return
-        stat = status_invalid
-        if (seed < 1) then
-            write (msg, "(a, i0, a)") "seed = ", seed, ": allowed an integer >= 1"
-            return
-        end if
-        if (first < 1) then
-            write (msg, "(a, i0, a)") "first = ", first, ": allowed an integer >= 1"
-            return
-        end if
-        if (.not. (abs(mean) <= huge(1.0_dp))) then
-            msg = "mean = "//short(mean)//": allowed a finite number"
-            return
-        end if
-        if (.not. (sd > 0.0_qp .and. sd <= huge(1.0_dp))) then
-            msg = "sd = "//short(sd)//": allowed a finite sd > 0"
-            return
-        end if
-        mass = 1.0_dp - normal_mass_outside_unit(mean, sd)
-        if (.not. (mass >= min_acceptance)) then
-            msg = "mean = "//short(mean)//", sd = "//short(sd)//": only " &
-                //short(real(mass, qp))//" of the law lies in 0 <= e <= 1; allowed at least 0.1"
-            return
-        end if
-        if (size(e_samples) /= size(v4)) then
-            write (msg, "(a, i0, a, i0)") "e_samples: size ", size(e_samples), &
-                ": allowed the size of v4, ", size(v4)
-            return
-        end if
-        stat = status_normal
-        msg = ""
-        if (size(v4) == 0) return
+        call check_inputs(scene, mean, sd, seed, first, size(v4), size(e_samples), stat, msg)
+        if (stat /= status_normal .or. size(v4) == 0) return
 
         use_lean = .true.
         if (present(lean)) use_lean = lean
+        use_auto = .false.
+        if (present(auto)) use_auto = auto
         if (use_lean) then
             call probe%prepare(scene, stat, msg)
             use_lean = stat == status_normal
@@ -303,6 +288,8 @@ contains
             counts%collapsed = counts%collapsed + block_counts(b)%collapsed
             counts%incomplete = counts%incomplete + block_counts(b)%incomplete
             counts%collisions = counts%collisions + block_counts(b)%collisions
+            counts%escalated = counts%escalated + block_counts(b)%escalated
+            counts%bound_max = max(counts%bound_max, block_counts(b)%bound_max)
         end do
 
     contains
@@ -317,10 +304,8 @@ contains
             type(lean_row_t) :: lean_row
             type(scene_t) :: trial
             type(run_t) :: run
-            real(qp) :: v4_q
             real(dp) :: z, e
             integer :: i, i_lo, i_hi, status, block_stat, n
-            logical :: deferred
             character(len=80) :: block_msg
             i_lo = max((b - 1)*mc_block_size + 1, first)
             i_hi = min(b*mc_block_size, last)
@@ -336,26 +321,104 @@ contains
                 end do
                 if (i < i_lo) cycle
                 e_samples(i - first + 1) = e
-                if (use_lean) then
-                    call lean_row%v4(real(e, qp), v4_q, status, deferred, n)
-                else
-                    trial%e = real(e, qp)
-                    call simulate(trial, run)
-                    v4_q = run%v(trial%p)
-                    status = run%status
-                    n = run%n
-                end if
+                call run_one(e, lean_row, trial, run, v4(i - first + 1), status, n, block)
                 block%collisions = block%collisions + n
                 if (status == status_collapsed) then
                     block%collapsed = block%collapsed + 1
                 else if (status /= status_normal) then
                     block%incomplete = block%incomplete + 1
                 end if
-                v4(i - first + 1) = real(v4_q, dp)
             end do
             block%runs = i_hi - i_lo + 1
             call sampler%release()
         end subroutine run_block
+
+        !> One run at restitution e in the precision chosen: v4 (as a double),
+        !> the run's status and collision count; an escalation and the bound
+        !> of a certified real64 run are entered into `block`.
+        subroutine run_one(e, lean_row, trial, run, v4_d, status, n, block)
+            real(dp), intent(in) :: e
+            type(lean_row_t), intent(inout) :: lean_row
+            type(scene_t), intent(inout) :: trial
+            type(run_t), intent(inout) :: run
+            real(dp), intent(out) :: v4_d
+            integer, intent(out) :: status, n
+            type(mc_counts_t), intent(inout) :: block
+            type(auto_t) :: info
+            real(qp) :: v4_q
+            real(dp) :: bound
+            logical :: deferred, escalated
+            if (use_lean .and. use_auto) then
+                call lean_row%auto_v4(e, v4_d, status, escalated, bound, n)
+            else if (use_lean) then
+                call lean_row%v4(real(e, qp), v4_q, status, deferred, n)
+                v4_d = real(v4_q, dp)
+                return
+            else
+                trial%e = real(e, qp)
+                if (use_auto) then
+                    call simulate_auto(trial, run, info)
+                    escalated = info%answered /= "dp"
+                    bound = 0.0_dp
+                    if (.not. escalated) bound = real(info%v_bound, dp)
+                else
+                    call simulate(trial, run)
+                end if
+                v4_d = real(run%v(trial%p), dp)
+                status = run%status
+                n = run%n
+                if (.not. use_auto) return
+            end if
+            if (escalated) block%escalated = block%escalated + 1
+            block%bound_max = max(block%bound_max, bound)
+        end subroutine run_one
+
+    end subroutine monte_carlo_v4
+
+    !> The checks of monte_carlo_v4's inputs: a valid scene, seed and first
+    !> >= 1, a finite law with at least min_acceptance of it in [0, 1], and as
+    !> many e samples (n_e) as v4 samples (n_v4).
+    subroutine check_inputs(scene, mean, sd, seed, first, n_v4, n_e, stat, msg)
+        type(scene_t), intent(in) :: scene
+        real(qp), intent(in) :: mean, sd
+        integer, intent(in) :: seed, first, n_v4, n_e
+        integer, intent(out) :: stat
+        character(len=*), intent(out) :: msg
+        real(dp) :: mass
+        call scene_check(scene, stat, msg)
+        if (stat /= status_normal) return
+        stat = status_invalid
+        if (seed < 1) then
+            write (msg, "(a, i0, a)") "seed = ", seed, ": allowed an integer >= 1"
+            return
+        end if
+        if (first < 1) then
+            write (msg, "(a, i0, a)") "first = ", first, ": allowed an integer >= 1"
+            return
+        end if
+        if (.not. (abs(mean) <= huge(1.0_dp))) then
+            msg = "mean = "//short(mean)//": allowed a finite number"
+            return
+        end if
+        if (.not. (sd > 0.0_qp .and. sd <= huge(1.0_dp))) then
+            msg = "sd = "//short(sd)//": allowed a finite sd > 0"
+            return
+        end if
+        mass = 1.0_dp - normal_mass_outside_unit(mean, sd)
+        if (.not. (mass >= min_acceptance)) then
+            msg = "mean = "//short(mean)//", sd = "//short(sd)//": only " &
+                //short(real(mass, qp))//" of the law lies in 0 <= e <= 1; allowed at least 0.1"
+            return
+        end if
+        if (n_e /= n_v4) then
+            write (msg, "(a, i0, a, i0)") "e_samples: size ", n_e, &
+                ": allowed the size of v4, ", n_v4
+            return
+        end if
+        stat = status_normal
+        msg = ""
+
+    contains
 
         !> Six significant digits are enough to name a value in a message.
         pure function short(x) result(s)
@@ -364,7 +427,7 @@ contains
             s = real_str(x, 6)
         end function short
 
-    end subroutine monte_carlo_v4
+    end subroutine check_inputs
 
     !> The MT19937 seed of block b of the stream of `seed`:
     !> 1 + (seed k1 + (b-1) k2) mod (2^32 - 1), with k1, k2 prime to 2^32 - 1,
@@ -536,6 +599,25 @@ contains
         p = gsl_cdf_ugaussian_p(standard_score(v, m, s, v0))
     end function cubic_law_cdf
 
+    !> cubic_law_cdf at every value of v, into p (of the same size): the law's
+    !> parameters converted to double once, the values shared among threads
+    !> (each p(i) is the same for any number of them).
+    subroutine cubic_law_cdf_all(v, m, s, v0, p)
+        real(dp), intent(in) :: v(:)
+        real(qp), intent(in) :: m, s, v0
+        real(dp), intent(out) :: p(:)
+        real(dp) :: m_d, s_d, v0_d
+        integer :: i
+        m_d = real(m, dp)
+        s_d = real(s, dp)
+        v0_d = real(v0, dp)
+        !$omp parallel do schedule(static) default(shared) private(i)
+        do i = 1, size(v)
+            p(i) = gsl_cdf_ugaussian_p(score(v(i), m_d, s_d, v0_d))
+        end do
+        !$omp end parallel do
+    end subroutine cubic_law_cdf_all
+
     !> Density of v0 ((1+e)/2)^3, e ~ N(m, s^2): phi(z) dz/dv with
     !> z = (2 (v/v0)^(1/3) - 1 - m)/s, dz/dv = 2 (v/v0)^(-2/3) / (3 s v0).
     elemental function cubic_law_density(v, m, s, v0) result(f)
@@ -557,11 +639,18 @@ contains
         real(dp), intent(in) :: v
         real(qp), intent(in) :: m, s, v0
         real(dp) :: z
+        z = score(v, real(m, dp), real(s, dp), real(v0, dp))
+    end function standard_score
+
+    !> standard_score with the law's parameters as doubles.
+    elemental function score(v, m, s, v0) result(z)
+        real(dp), intent(in) :: v, m, s, v0
+        real(dp) :: z
         real(dp) :: r
         r = 0.0_dp
-        if (v > 0.0_dp) r = (v/real(v0, dp))**(1.0_dp/3.0_dp)
-        z = (2.0_dp*r - 1.0_dp - real(m, dp))/real(s, dp)
-    end function standard_score
+        if (v > 0.0_dp) r = (v/v0)**(1.0_dp/3.0_dp)
+        z = (2.0_dp*r - 1.0_dp - m)/s
+    end function score
 
     !> The smallest e in [e_lo, e_hi], to real128 resolution, above which the
     !> last sphere is struck exactly once: bisection on that property of the
