@@ -36,18 +36,22 @@ TEST_FLAGS := $(if $(NO_XDP),--profile debug $(KIND_FLAGS))
 
 # MPI=1: c12-ecrit is built with OpenMPI's mpifort (-DSPHERE_ROW_MPI) into its
 # own prefix and run on NP ranks of OMP_PER_RANK threads each; every other
-# program, and the build without MPI=1, needs no MPI. MPIRUN may be any
-# launcher taking `-np N` (e.g. MPIRUN='mpirun --hostfile hosts' on a cluster).
+# program, and the build without MPI=1, needs no MPI. The launcher is
+# `$(MPIRUN) $(MPIRUN_FLAGS) $(NP_FLAG) N`: on a cluster e.g.
+# MPIRUN='mpirun --hostfile hosts', or MPIRUN='srun --mpi=pmix' MPIRUN_FLAGS=
+# NP_FLAG=-n (srun hands its environment, OMP_NUM_THREADS too, to the ranks).
 NP ?= 2
 OMP_PER_RANK ?= 1
 MPIRUN ?= mpirun
+NP_FLAG ?= -np
 MPI_BIN := build/release-mpi/bin
 MPI_STAMP := build/.release-mpi-stamp
 MPI_FLAGS := --flag -DSPHERE_ROW_MPI
 # more ranks than cores are allowed (the test runs 4 on any machine); OpenMPI
 # refuses to start as root unless told to (CI containers run as root)
-MPIRUN_FLAGS ?= --oversubscribe $(if $(filter 0,$(shell id -u)),--allow-run-as-root)
-mpirun_np = $(MPIRUN) $(MPIRUN_FLAGS) -x OMP_NUM_THREADS=$(OMP_PER_RANK) -np $(1)
+MPIRUN_FLAGS ?= --oversubscribe $(if $(filter 0,$(shell id -u)),--allow-run-as-root) \
+                -x OMP_NUM_THREADS=$(OMP_PER_RANK)
+mpirun_np = $(MPIRUN) $(MPIRUN_FLAGS) $(NP_FLAG) $(1)
 ifeq ($(MPI),1)
 ECRIT_STAMP := $(MPI_STAMP)
 ECRIT_RUN := $(call mpirun_np,$(NP)) $(MPI_BIN)/c12-ecrit

@@ -83,6 +83,11 @@ contains
                 return
             end if
             ranks%started = .true.
+            if (provided < mpi_thread_funneled) then
+                msg = "the MPI library offers no threads (level "//itoa(provided) &
+                    //"), OpenMP threads need MPI_THREAD_FUNNELED"
+                return
+            end if
         end if
         call mpi_comm_rank(mpi_comm_world, ranks%rank, ierr)
         call mpi_comm_size(mpi_comm_world, ranks%n_ranks, ierr)
