@@ -6,7 +6,11 @@
 #   make check-results   regenerate the study elsewhere and compare with results/
 #   make docs            API documentation (FORD) in build/docs/index.html
 #   make lint            the Fortran linter fortitude, rules in fortitude.toml
+#   make test-mpi        c12-ecrit on 1, 2 and 4 MPI ranks gives the same bytes
+#                        as the serial build (installs OpenMPI if missing)
 #   make help            this list
+#
+#   make study MPI=1 NP=4   the same study, c12-ecrit run on 4 MPI ranks
 #
 # Programs -> tables -> figures: each table is made by its study program, each
 # figure by its gnuplot script from its tables; a second `make study` with
@@ -29,6 +33,32 @@ SOURCES := $(wildcard include/*.h src/*.f90 src/*.inc study/src/*.f90 study/src/
 # real(10) does (aarch64): `make test NO_XDP=1` tests that build
 KIND_FLAGS := $(if $(NO_XDP),--flag -DSPHERE_ROW_NO_XDP)
 TEST_FLAGS := $(if $(NO_XDP),--profile debug $(KIND_FLAGS))
+
+# MPI=1: c12-ecrit is built with OpenMPI's mpifort (-DSPHERE_ROW_MPI) into its
+# own prefix and run on NP ranks of OMP_PER_RANK threads each; every other
+# program, and the build without MPI=1, needs no MPI. The launcher is
+# `$(MPIRUN) $(MPIRUN_FLAGS) $(NP_FLAG) N`: on a cluster e.g.
+# MPIRUN='mpirun --hostfile hosts', or MPIRUN='srun --mpi=pmix' MPIRUN_FLAGS=
+# NP_FLAG=-n (srun hands its environment, OMP_NUM_THREADS too, to the ranks).
+NP ?= 2
+OMP_PER_RANK ?= 1
+MPIRUN ?= mpirun
+NP_FLAG ?= -np
+MPI_BIN := build/release-mpi/bin
+MPI_STAMP := build/.release-mpi-stamp
+MPI_FLAGS := --flag -DSPHERE_ROW_MPI
+# more ranks than cores are allowed (the test runs 4 on any machine); OpenMPI
+# refuses to start as root unless told to (CI containers run as root)
+MPIRUN_FLAGS ?= --oversubscribe $(if $(filter 0,$(shell id -u)),--allow-run-as-root) \
+                -x OMP_NUM_THREADS=$(OMP_PER_RANK)
+mpirun_np = $(MPIRUN) $(MPIRUN_FLAGS) $(NP_FLAG) $(1)
+ifeq ($(MPI),1)
+ECRIT_STAMP := $(MPI_STAMP)
+ECRIT_RUN := $(call mpirun_np,$(NP)) $(MPI_BIN)/c12-ecrit
+else
+ECRIT_STAMP := $(BUILD_STAMP)
+ECRIT_RUN := $(BIN)/c12-ecrit
+endif
 
 # tables of each study program (grouped: one run writes them all)
 A1 := $(RESULTS)/a1_paths.tsv $(RESULTS)/a1_answers.tsv
@@ -57,8 +87,8 @@ PNG := $(FIGURES:%=$(RESULTS)/%.png) $(RESULTS)/methods_work_precision.png \
 SVG := $(FIGURES:%=$(RESULTS)/%.svg) $(RESULTS)/methods_work_precision.svg \
        $(RESULTS)/methods_stability.svg
 
-.PHONY: all help prereqs test check-layers study tables figures bench callgrind check-results \
-        docs lint clean
+.PHONY: all help prereqs test test-mpi check-layers study tables figures bench callgrind \
+        check-results docs lint clean
 
 all: study
 
@@ -109,13 +139,14 @@ check-layers: ## check the layer rules (umbrella imports, per-kind imports, GSL)
 
 # fpm does not see edits of an included template (src/*.inc, study/src/*.inc):
 # drop the objects of every source that includes one, in both packages' build
-# trees (in the study's, the root's sources are named .._src_*), and the linked
+# trees of either compiler (gfortran, or mpifort for MPI=1; in the study's, the
+# root's sources are named .._src_*), and the linked
 # programs, which fpm does not relink on its own, so that fpm builds them again.
 $(INC_STAMP): $(wildcard src/*.inc study/src/*.inc)
 	@mkdir -p build
 	for f in $$(grep -l '^ *include "' src/*.f90 study/src/*.f90); do \
-		rm -f {,study/}build/gfortran_*/*/{,.._}src_$$(basename $$f).o*; done
-	rm -f {,study/}build/gfortran_*/{app,test}/*
+		rm -f {,study/}build/{gfortran,mpifort}_*/*/{,.._}src_$$(basename $$f).o*; done
+	rm -f {,study/}build/{gfortran,mpifort}_*/{app,test}/*
 	@touch $@
 
 # the study package's programs (with tsv-compare); the CLI is not needed here
@@ -123,10 +154,19 @@ $(BUILD_STAMP): $(SOURCES) $(INC_STAMP)
 	cd study && $(FPM) install --profile release $(KIND_FLAGS) --prefix $(abspath build/release)
 	@touch $@
 
-# run one study program, keeping its wall time apart from the tables
+# the same with OpenMPI's compiler wrapper and the MPI code of the ranks
+# module, in its own prefix (fpm's build tree of another compiler is its own)
+$(MPI_STAMP): $(SOURCES) $(INC_STAMP)
+	@bash .ci/prereqs mpi
+	cd study && FPM_FC=mpifort $(FPM) install --profile release $(KIND_FLAGS) $(MPI_FLAGS) \
+		--prefix $(abspath build/release-mpi)
+	@touch $@
+
+# run one study program, keeping its wall time apart from the tables; a third
+# argument is the command that runs it (default: the serial build's program)
 define study_run
 	@mkdir -p $(RESULTS)/timing
-	@start=$$(date +%s.%N); $(BIN)/$(1) out=$(RESULTS) $(2); \
+	@start=$$(date +%s.%N); $(or $(3),$(BIN)/$(1)) out=$(RESULTS) $(2); \
 	end=$$(date +%s.%N); \
 	awk -v s=$$start -v e=$$end -v p=$(1) 'BEGIN { printf "%s\t%.3f\n", p, e - s }' \
 		> $(RESULTS)/timing/$(1).tsv
@@ -149,8 +189,8 @@ $(COLLAPSE) &: $(BUILD_STAMP)
 	$(call study_run,c12-collapse)
 $(METHODS) &: $(BUILD_STAMP)
 	$(call study_run,c12-methods)
-$(ECRIT) &: $(BUILD_STAMP)
-	$(call study_run,c12-ecrit)
+$(ECRIT) &: $(ECRIT_STAMP)
+	$(call study_run,c12-ecrit,,$(ECRIT_RUN))
 $(COST) &: $(BUILD_STAMP)
 	$(call study_run,c12-cost)
 
@@ -190,6 +230,30 @@ check-results: prereqs ## regenerate the tables in build/ and compare with resul
 	rm -rf build/check
 	$(MAKE) --no-print-directory RESULTS=build/check tables build/check/answers.tsv
 	$(BIN)/tsv-compare committed=$(RESULTS) fresh=build/check
+
+# c12-ecrit on a short range of p (rows 3 ... 6 take the real(16) and
+# rate-map stages, so every field of a row travels between ranks): the serial
+# build on 1 and 2 threads and the MPI build on 1, 2 and 4 ranks (4 ranks also
+# for 2 rows, where ranks have none) must write the same bytes
+ECRIT_QUICK := p_min=3 p_max=10
+test-mpi: prereqs $(BUILD_STAMP) $(MPI_STAMP) ## c12-ecrit on 1, 2, 4 MPI ranks == serial, byte for byte
+	@rm -rf build/test-mpi
+	@set -e; t=build/test-mpi; failed=0; \
+	run() { dir=$$1; shift; echo "$$dir: $$*"; \
+		if ! "$$@" out=$$t/$$dir > $$t/$$dir.log 2>&1; then \
+			cat $$t/$$dir.log; echo "$$dir: failed"; failed=$$((failed + 1)); fi; }; \
+	same() { for f in ecrit.tsv ecrit_answers.tsv; do \
+		cmp $$t/$$1/$$f $$t/$$2/$$f || failed=$$((failed + 1)); done; }; \
+	mkdir -p $$t; \
+	run serial env OMP_NUM_THREADS=1 $(BIN)/c12-ecrit $(ECRIT_QUICK); \
+	run threads2 env OMP_NUM_THREADS=2 $(BIN)/c12-ecrit $(ECRIT_QUICK); same serial threads2; \
+	for np in 1 2 4; do \
+		run np$$np $(call mpirun_np,$$np) $(MPI_BIN)/c12-ecrit $(ECRIT_QUICK); \
+		same serial np$$np; done; \
+	run serial_two env OMP_NUM_THREADS=1 $(BIN)/c12-ecrit p_min=3 p_max=4; \
+	run np4_two $(call mpirun_np,4) $(MPI_BIN)/c12-ecrit p_min=3 p_max=4; same serial_two np4_two; \
+	if [ $$failed -gt 0 ]; then echo "test-mpi: $$failed runs or comparisons failed"; exit 1; fi; \
+	echo "test-mpi: 1, 2 and 4 ranks and 1 and 2 threads wrote the same tables"
 
 docs: ## API documentation from the !> comments (FORD) in build/docs/index.html
 	@bash .ci/prereqs docs

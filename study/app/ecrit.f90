@@ -2,20 +2,29 @@
 !> p equal spheres, for p = p_min ... p_max, by the collapse machinery of the
 !> engine (bisection of the edge of the finite region) and, for small p, by
 !> the rate map of the collapse cycle; fits of n above e_c and of e_c(p).
+!>
+!> The rows are independent: they run in parallel with OpenMP and, built with
+!> MPI, are shared out over the ranks (cyclically, since the cost grows with
+!> p); rank 0 gathers them and alone writes the tables, which are the same
+!> bits for any number of threads and ranks.
 program c12_ecrit
     use sphere_row, only: qp, str, itoa
     use sphere_row_tables, only: open_table, write_answer, answer_header, tab
     use sphere_row_study_cli, only: cli_t, start_program, read_keys, fail, stop_unless_normal
     use sphere_row_ecrit, only: ecrit_settings_t, ecrit_row_t, ecrit_row, row_estimate, &
-        power_fit, mcnamara_young_k, mcnamara_young_e, outcome_word
+        power_fit, mcnamara_young_k, mcnamara_young_e, outcome_word, row_bytes, row_from_bytes
+    use sphere_row_ranks, only: ranks_t, record_t, ranks_start, ranks_finish, owner_of, &
+        gather_records, layout_cyclic
     implicit none
     character(len=*), parameter :: nl = new_line("a")
     type(cli_t) :: cli
+    type(ranks_t) :: ranks
     !> The rows whose rate-map e_c has a published or derived closed form.
     real(qp), parameter :: closed_3 = 7.0_qp - 4.0_qp*sqrt(3.0_qp)
     real(qp), parameter :: closed_4 = 3.0_qp - 2.0_qp*sqrt(2.0_qp)
     character(len=:), allocatable :: out
     character(len=300) :: msg
+    character(len=:), allocatable :: rank_msg
     logical, allocatable :: large(:)
     type(ecrit_settings_t) :: s
     type(ecrit_row_t), allocatable :: rows(:)
@@ -25,11 +34,19 @@ program c12_ecrit
     real(qp) :: c_fit, slope, k_my
     character(len=16), allocatable :: methods(:)
 
+    call ranks_start(ranks, stat, rank_msg)
+    call stop_unless_normal(stat, rank_msg)
     call define_keys()
     call read_settings()
     call compute_rows()
-    call write_rows()
-    call write_answers()
+    call gather_rows()
+    if (ranks%rank == 0) then
+        call fit_rows()
+        call write_rows()
+        call write_answers()
+    end if
+    call ranks_finish(ranks, stat, rank_msg)
+    call stop_unless_normal(stat, rank_msg)
 
 contains
 
@@ -56,16 +73,52 @@ contains
             //itoa(p_min))
     end subroutine read_settings
 
-    !> Every row's e_c, then the fits over the large p: 1 - e_c = c p^(-beta),
-    !> and McNamara and Young's form.
+    !> The e_c of this rank's rows, longest rows first so that the threads
+    !> end together (each row's result does not depend on who computes it).
     subroutine compute_rows()
+        integer, allocatable :: mine(:)
+        integer :: j, k
+        ps = [(j, j=p_min, p_max)]
+        allocate (rows(size(ps)))
+        mine = pack([(j, j=size(ps), 1, -1)], &
+            owner_of([(j, j=size(ps), 1, -1)], size(ps), ranks%n_ranks, layout_cyclic) &
+            == ranks%rank)
+        !$omp parallel do schedule(dynamic, 1) default(shared) private(k)
+        do k = 1, size(mine)
+            call ecrit_row(ps(mine(k)), s, rows(mine(k)))
+        end do
+        !$omp end parallel do
+    end subroutine compute_rows
+
+    !> Every row on rank 0, each at its p, whichever rank computed it.
+    subroutine gather_rows()
+        type(record_t), allocatable :: records(:)
+        integer :: j
+        if (ranks%n_ranks == 1) return
+        allocate (records(size(ps)))
+        do j = 1, size(ps)
+            if (owner_of(j, size(ps), ranks%n_ranks, layout_cyclic) == ranks%rank) then
+                records(j)%bytes = row_bytes(rows(j))
+            end if
+        end do
+        call gather_records(ranks, layout_cyclic, records, stat, rank_msg)
+        call stop_unless_normal(stat, rank_msg)
+        if (ranks%rank /= 0) return
+        do j = 1, size(ps)
+            call row_from_bytes(records(j)%bytes, rows(j), stat)
+            call stop_unless_normal(stat, "p = "//itoa(ps(j))//": the row gathered from rank " &
+                //itoa(owner_of(j, size(ps), ranks%n_ranks, layout_cyclic))//" is damaged")
+        end do
+    end subroutine gather_rows
+
+    !> Each row's estimate of e_c, then the fits over the large p:
+    !> 1 - e_c = c p^(-beta), and McNamara and Young's form.
+    subroutine fit_rows()
         character(len=:), allocatable :: method
         real(qp), allocatable :: one_minus(:)
         integer :: j
-        ps = [(j, j=p_min, p_max)]
-        allocate (rows(size(ps)), e_c(size(ps)), methods(size(ps)))
+        allocate (e_c(size(ps)), methods(size(ps)))
         do j = 1, size(ps)
-            call ecrit_row(ps(j), s, rows(j))
             call row_estimate(rows(j), s%map_window, e_c(j), method)
             methods(j) = method
         end do
@@ -78,7 +131,7 @@ contains
         if (n_large > 0) k_my = mcnamara_young_k(ps, e_c, large)
         n_multi = count(rows%changes > 1)
         n_decrease = count(e_c(2:) <= e_c(:size(ps) - 1))
-    end subroutine compute_rows
+    end subroutine fit_rows
 
     !> ecrit.tsv: one row per p with its edge, rate map and fits.
     subroutine write_rows()

@@ -17,6 +17,7 @@ module sphere_row_ecrit
     use sphere_row, only: dp, qp, scene_t, run_t, event_log_t, scene_dp_t, run_dp_t, &
         simulate, status_normal, status_invalid
     use sphere_row_analysis, only: rate_map, sequence_of
+    use, intrinsic :: iso_fortran_env, only: int8
     implicit none
     private
     public :: outcome_finite, outcome_cycle, outcome_fallback, outcome_capped
@@ -25,7 +26,7 @@ module sphere_row_ecrit
     public :: collapse_cycle, group_map, char_poly, dominant_pair, dominant_is_real
     public :: rate_map_critical, closed_form_t, closed_form_search
     public :: ecrit_settings_t, ecrit_row_t, ecrit_row, row_estimate, mcnamara_young_k, &
-        mcnamara_young_e
+        mcnamara_young_e, row_bytes, row_from_bytes
 
     !> The run ended normally without a collapse: finitely many collisions.
     integer, parameter :: outcome_finite = 1
@@ -73,12 +74,15 @@ module sphere_row_ecrit
         module procedure outcome_of_qp, outcome_of_dp
     end interface outcome_of
 
+    !> Length of the text of a closed form.
+    integer, parameter :: form_text_len = 80
+
     !> A closed form found for a value: its text and its value in real(16).
     type :: closed_form_t
         !> True if a candidate matched.
         logical :: found = .false.
         !> The form, e.g. "tan^2(pi/12) = 7-4sqrt(3)" or "root of x^2-14x+1".
-        character(len=80) :: text = "-"
+        character(len=form_text_len) :: text = "-"
         !> Its value in real(16).
         real(qp) :: value = 0.0_qp
     end type closed_form_t
@@ -167,6 +171,10 @@ module sphere_row_ecrit
     real(qp), parameter :: probe_step = 1.0e-6_qp
     !> Iterations of the simultaneous root finder (Durand-Kerner).
     integer, parameter :: root_iterations = 2000
+    !> The bytes of a row (row_bytes): its reals, its closed form's text, then
+    !> its integers, whose count grows with its cycle.
+    integer, parameter :: row_reals = 9, row_fixed_ints = 11
+    integer, parameter :: row_text_bytes = form_text_len
 
 contains
 
@@ -314,6 +322,65 @@ contains
         call power_fit(delta, n, use, row%c, slope, row%n_fit_used)
         row%alpha = -slope
     end subroutine fit_growth
+
+    !> The row as bytes, every number with all its bits (to move it between
+    !> processes; row_from_bytes reads it back).
+    pure function row_bytes(row) result(bytes)
+        type(ecrit_row_t), intent(in) :: row
+        integer(int8), allocatable :: bytes(:)
+        real(qp) :: reals(row_reals)
+        integer, allocatable :: ints(:)
+        integer(int8), parameter :: mold(1) = 0_int8
+        reals = [row%b%e_low, row%b%e_high, row%b%e_cycle, row%b%e_collapse, row%c, row%alpha, &
+            row%e_map, row%e_pattern, row%form%value]
+        ints = [row%p, row%b%outcome_low, row%b%steps, row%changes, row%capped, row%precision, &
+            row%runs, row%n_fit_used, merge(1, 0, row%has_map), merge(1, 0, row%form%found), &
+            size(row%cycle), row%cycle]
+        bytes = [transfer(reals, mold), transfer(row%form%text, mold), transfer(ints, mold)]
+    end function row_bytes
+
+    !> The row written by row_bytes; `stat` is status_invalid if the bytes
+    !> are not the length of one.
+    pure subroutine row_from_bytes(bytes, row, stat)
+        integer(int8), intent(in) :: bytes(:)
+        type(ecrit_row_t), intent(out) :: row
+        integer, intent(out) :: stat
+        real(qp) :: reals(row_reals)
+        integer, allocatable :: ints(:)
+        integer :: real_bytes, int_bytes, n_ints
+        stat = status_invalid
+        real_bytes = size(transfer(reals, [0_int8]))
+        int_bytes = size(transfer(0, [0_int8]))
+        if (size(bytes) < real_bytes + row_text_bytes + row_fixed_ints*int_bytes) return
+        if (mod(size(bytes) - real_bytes - row_text_bytes, int_bytes) /= 0) return
+        n_ints = (size(bytes) - real_bytes - row_text_bytes)/int_bytes
+        reals = transfer(bytes(:real_bytes), reals)
+        row%form%text = transfer(bytes(real_bytes + 1:real_bytes + row_text_bytes), row%form%text)
+        allocate (ints(n_ints))
+        ints = transfer(bytes(real_bytes + row_text_bytes + 1:), ints)
+        if (ints(row_fixed_ints) /= n_ints - row_fixed_ints) return
+        row%b%e_low = reals(1)
+        row%b%e_high = reals(2)
+        row%b%e_cycle = reals(3)
+        row%b%e_collapse = reals(4)
+        row%c = reals(5)
+        row%alpha = reals(6)
+        row%e_map = reals(7)
+        row%e_pattern = reals(8)
+        row%form%value = reals(9)
+        row%p = ints(1)
+        row%b%outcome_low = ints(2)
+        row%b%steps = ints(3)
+        row%changes = ints(4)
+        row%capped = ints(5)
+        row%precision = ints(6)
+        row%runs = ints(7)
+        row%n_fit_used = ints(8)
+        row%has_map = ints(9) == 1
+        row%form%found = ints(10) == 1
+        row%cycle = ints(row_fixed_ints + 1:)
+        stat = status_normal
+    end subroutine row_from_bytes
 
     !> The struck row of p equal spheres (a = d = v0 = 1) in kind `precision`,
     !> insignificance tolerance `tol` and safety net `max_collisions`.

@@ -7,6 +7,7 @@ program check
     use test_ecrit, only: collect_ecrit
     use test_lean, only: collect_lean
     use test_auto, only: collect_auto
+    use test_ranks, only: collect_ranks
     implicit none
     integer :: passed, failed
     passed = 0
@@ -17,6 +18,7 @@ program check
     call run_tests("ecrit", collect_ecrit(), passed, failed)
     call run_tests("lean", collect_lean(), passed, failed)
     call run_tests("auto", collect_auto(), passed, failed)
+    call run_tests("ranks", collect_ranks(), passed, failed)
     print "(i0, ' passed, ', i0, ' failed')", passed, failed
     if (failed > 0) stop 1, quiet=.true.
 end program check
