@@ -34,10 +34,10 @@ program c12_b1
     integer(8), allocatable :: class_scan(:)
     integer(8) :: class_mid
     !> A thread's own scene, run and log for the bisections of step 2.
-    type(scene_t) :: thread_scene
-    type(run_t) :: thread_run
-    type(event_log_t) :: thread_events
-    integer, allocatable :: thread_pairs(:)
+    type(scene_t), save :: thread_scene
+    type(run_t), save :: thread_run
+    type(event_log_t), save :: thread_events
+    integer, allocatable, save :: thread_pairs(:)
     !$omp threadprivate(thread_scene, thread_run, thread_events, thread_pairs)
     !> The changes found in one interval of the scan.
     type :: found_t
