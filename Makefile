@@ -6,11 +6,11 @@
 #   make check-results   regenerate the study elsewhere and compare with results/
 #   make docs            API documentation (FORD) in build/docs/index.html
 #   make lint            the Fortran linter fortitude, rules in fortitude.toml
-#   make test-mpi        c12-ecrit on 1, 2 and 4 MPI ranks gives the same bytes
-#                        as the serial build (installs OpenMPI if missing)
+#   make test-mpi        c12-ecrit and c12-c2 on 1, 2 and 4 MPI ranks give the
+#                        same bytes as the serial build (installs OpenMPI if missing)
 #   make help            this list
 #
-#   make study MPI=1 NP=4   the same study, c12-ecrit run on 4 MPI ranks
+#   make study MPI=1 NP=4   the same study, c12-ecrit and c12-c2 run on 4 MPI ranks
 #
 # Programs -> tables -> figures: each table is made by its study program, each
 # figure by its gnuplot script from its tables; a second `make study` with
@@ -34,8 +34,8 @@ SOURCES := $(wildcard include/*.h src/*.f90 src/*.inc study/src/*.f90 study/src/
 KIND_FLAGS := $(if $(NO_XDP),--flag -DSPHERE_ROW_NO_XDP)
 TEST_FLAGS := $(if $(NO_XDP),--profile debug $(KIND_FLAGS))
 
-# MPI=1: c12-ecrit is built with OpenMPI's mpifort (-DSPHERE_ROW_MPI) into its
-# own prefix and run on NP ranks of OMP_PER_RANK threads each; every other
+# MPI=1: c12-ecrit and c12-c2 are built with OpenMPI's mpifort (-DSPHERE_ROW_MPI)
+# into their own prefix and run on NP ranks of OMP_PER_RANK threads each; every other
 # program, and the build without MPI=1, needs no MPI. The launcher is
 # `$(MPIRUN) $(MPIRUN_FLAGS) $(NP_FLAG) N`: on a cluster e.g.
 # MPIRUN='mpirun --hostfile hosts', or MPIRUN='srun --mpi=pmix' MPIRUN_FLAGS=
@@ -55,9 +55,13 @@ mpirun_np = $(MPIRUN) $(MPIRUN_FLAGS) $(NP_FLAG) $(1)
 ifeq ($(MPI),1)
 ECRIT_STAMP := $(MPI_STAMP)
 ECRIT_RUN := $(call mpirun_np,$(NP)) $(MPI_BIN)/c12-ecrit
+C2_STAMP := $(MPI_STAMP)
+C2_RUN := $(call mpirun_np,$(NP)) $(MPI_BIN)/c12-c2
 else
 ECRIT_STAMP := $(BUILD_STAMP)
 ECRIT_RUN := $(BIN)/c12-ecrit
+C2_STAMP := $(BUILD_STAMP)
+C2_RUN := $(BIN)/c12-c2
 endif
 
 # tables of each study program (grouped: one run writes them all)
@@ -183,8 +187,8 @@ $(B2) &: $(BUILD_STAMP)
 $(C1) &: $(BUILD_STAMP)
 	$(call study_run,c12-c1)
 # c2: the main sample of 10^6 runs, its convergence table up to 10^7
-$(C2) &: $(BUILD_STAMP)
-	$(call study_run,c12-c2,nmax=10000000)
+$(C2) &: $(C2_STAMP)
+	$(call study_run,c12-c2,nmax=10000000,$(C2_RUN))
 $(COLLAPSE) &: $(BUILD_STAMP)
 	$(call study_run,c12-collapse)
 $(METHODS) &: $(BUILD_STAMP)
@@ -234,26 +238,39 @@ check-results: prereqs ## regenerate the tables in build/ and compare with resul
 # c12-ecrit on a short range of p (rows 3 ... 6 take the real(16) and
 # rate-map stages, so every field of a row travels between ranks): the serial
 # build on 1 and 2 threads and the MPI build on 1, 2 and 4 ranks (4 ranks also
-# for 2 rows, where ranks have none) must write the same bytes
+# for 2 rows, where ranks have none) must write the same bytes; so must
+# c12-c2 on a short stream of 5 blocks whose third straddles n (4 ranks: one
+# with two blocks, one with the straddling block's main and rest counts)
 ECRIT_QUICK := p_min=3 p_max=10
-test-mpi: prereqs $(BUILD_STAMP) $(MPI_STAMP) ## c12-ecrit on 1, 2, 4 MPI ranks == serial, byte for byte
+C2_QUICK := n=25000 nmax=45000
+ECRIT_TABLES := ecrit.tsv ecrit_answers.tsv
+C2_TABLES := c2_ecdf.tsv c2_histogram.tsv c2_convergence.tsv c2_answers.tsv
+test-mpi: prereqs $(BUILD_STAMP) $(MPI_STAMP) ## c12-ecrit and c12-c2 on 1, 2, 4 MPI ranks == serial, byte for byte
 	@rm -rf build/test-mpi
 	@set -e; t=build/test-mpi; failed=0; \
 	run() { dir=$$1; shift; echo "$$dir: $$*"; \
 		if ! "$$@" out=$$t/$$dir > $$t/$$dir.log 2>&1; then \
 			cat $$t/$$dir.log; echo "$$dir: failed"; failed=$$((failed + 1)); fi; }; \
-	same() { for f in ecrit.tsv ecrit_answers.tsv; do \
-		cmp $$t/$$1/$$f $$t/$$2/$$f || failed=$$((failed + 1)); done; }; \
+	same() { a=$$1; b=$$2; shift 2; for f in "$$@"; do \
+		cmp $$t/$$a/$$f $$t/$$b/$$f || failed=$$((failed + 1)); done; }; \
 	mkdir -p $$t; \
 	run serial env OMP_NUM_THREADS=1 $(BIN)/c12-ecrit $(ECRIT_QUICK); \
-	run threads2 env OMP_NUM_THREADS=2 $(BIN)/c12-ecrit $(ECRIT_QUICK); same serial threads2; \
+	run threads2 env OMP_NUM_THREADS=2 $(BIN)/c12-ecrit $(ECRIT_QUICK); \
+	same serial threads2 $(ECRIT_TABLES); \
 	for np in 1 2 4; do \
 		run np$$np $(call mpirun_np,$$np) $(MPI_BIN)/c12-ecrit $(ECRIT_QUICK); \
-		same serial np$$np; done; \
+		same serial np$$np $(ECRIT_TABLES); done; \
 	run serial_two env OMP_NUM_THREADS=1 $(BIN)/c12-ecrit p_min=3 p_max=4; \
-	run np4_two $(call mpirun_np,4) $(MPI_BIN)/c12-ecrit p_min=3 p_max=4; same serial_two np4_two; \
+	run np4_two $(call mpirun_np,4) $(MPI_BIN)/c12-ecrit p_min=3 p_max=4; \
+	same serial_two np4_two $(ECRIT_TABLES); \
+	run c2_serial env OMP_NUM_THREADS=1 $(BIN)/c12-c2 $(C2_QUICK); \
+	run c2_threads2 env OMP_NUM_THREADS=2 $(BIN)/c12-c2 $(C2_QUICK); \
+	same c2_serial c2_threads2 $(C2_TABLES); \
+	for np in 1 2 4; do \
+		run c2_np$$np $(call mpirun_np,$$np) $(MPI_BIN)/c12-c2 $(C2_QUICK); \
+		same c2_serial c2_np$$np $(C2_TABLES); done; \
 	if [ $$failed -gt 0 ]; then echo "test-mpi: $$failed runs or comparisons failed"; exit 1; fi; \
-	echo "test-mpi: 1, 2 and 4 ranks and 1 and 2 threads wrote the same tables"
+	echo "test-mpi: c12-ecrit and c12-c2 on 1, 2 and 4 ranks and 1 and 2 threads wrote the same tables"
 
 docs: ## API documentation from the !> comments (FORD) in build/docs/index.html
 	@bash .ci/prereqs docs

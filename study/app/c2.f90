@@ -11,16 +11,21 @@
 !> N = 10^2, 10^3, ... of the same stream, so its row N = n is the main
 !> answer. The stream is made of blocks of 10^4 samples, each from its own
 !> generator (see monte_carlo_v4), run in parallel with OpenMP where built
-!> with it: the output is the same for any number of threads.
+!> with it and, built with MPI, shared out over the ranks in contiguous
+!> ranges of blocks; rank 0 gathers every block's samples and counts, adds
+!> the counts in block order and alone writes the tables: the output is the
+!> same for any number of threads and ranks.
 !>
 !> For the definition's row every answer is checked against the exact
 !> law of v4 = v0 ((1+e)/2)^3, valid where sphere 4 is struck once; the bound
 !> of that region is found with the engine and the samples below it counted.
 program c12_c2
-    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit, int64
+    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit, int64, int8
     use sphere_row, only: dp, qp, scene_t, itoa
     use sphere_row_monte_carlo, only: mc_counts_t, monte_carlo_v4, normal_mass_outside_unit, &
-        min_acceptance
+        min_acceptance, mc_block_size
+    use sphere_row_ranks, only: ranks_t, record_t, ranks_start, ranks_finish, block_range, &
+        gather_records, layout_blocks
     use sphere_row_c2_tables, only: c2_sample_t, c2_statistics, c2_write_tables
     use sphere_row_study_cli, only: cli_t, add_scene_keys, start_program, read_keys, fail, &
         stop_unless_normal
@@ -39,6 +44,12 @@ program c12_c2
     real(dp), parameter :: report_after = 2.0_dp, report_every = 1.0_dp
 
     type(cli_t) :: cli
+    type(ranks_t) :: ranks
+    character(len=:), allocatable :: rank_msg
+    !> Blocks of the stream, this rank's first ... last, and each block's
+    !> counts in the main sample and after it (one straddling n has both).
+    integer :: n_blocks, b_own_first, b_own_last
+    type(mc_counts_t), allocatable :: main_counts(:), rest_counts(:)
     character(len=:), allocatable :: out
     character(len=300) :: msg
     type(scene_t) :: scene
@@ -49,6 +60,8 @@ program c12_c2
     real(dp) :: seconds
     logical :: terminal, shown
 
+    call ranks_start(ranks, stat, rank_msg)
+    call stop_unless_normal(stat, rank_msg)
     call define_keys()
     call read_keys(cli, scene)
     out = cli%get_word("out")
@@ -64,39 +77,120 @@ program c12_c2
     call check_settings()
 
     call run_stream()
-    call c2_statistics(c, scene, error)
-    if (allocated(error)) call fail(error)
-    call c2_write_tables(c, out, error)
-    if (allocated(error)) call fail(error)
-    write (output_unit, "(a)") name//": "//itoa(c%nmax)//" runs in "//fixed(seconds) &
-        //" s ("//fixed(1.0e6_dp*seconds/c%nmax)//" us per run); tables in "//out
+    call gather_stream()
+    if (ranks%rank == 0) call write_results()
+    call ranks_finish(ranks, stat, rank_msg)
+    call stop_unless_normal(stat, rank_msg)
 
 contains
 
-    !> The stream, timed: first the main sample, then its continuation up to nmax.
+    !> On rank 0, with every block gathered: the counts, the statistics, the
+    !> tables and the line that says how long the stream took.
+    subroutine write_results()
+        call add_counts()
+        call c2_statistics(c, scene, error)
+        if (allocated(error)) call fail(error)
+        call c2_write_tables(c, out, error)
+        if (allocated(error)) call fail(error)
+        write (output_unit, "(a)") name//": "//itoa(c%nmax)//" runs in "//fixed(seconds) &
+            //" s ("//fixed(1.0e6_dp*seconds/c%nmax)//" us per run); tables in "//out
+    end subroutine write_results
+
+    !> This rank's blocks of the stream (all of them on one process), timed:
+    !> the part in the main sample first, then the part after it.
     subroutine run_stream()
-        type(mc_counts_t) :: counts_rest
         integer(int64) :: clock1
-        allocate (c%v4(c%nmax), c%e(c%nmax))
-        terminal = stderr_is_terminal()
+        integer :: lo, hi
+        n_blocks = (c%nmax - 1)/mc_block_size + 1
+        call block_range(n_blocks, ranks%n_ranks, ranks%rank, b_own_first, b_own_last)
+        allocate (c%v4(c%nmax), c%e(c%nmax), main_counts(n_blocks), rest_counts(n_blocks))
+        terminal = ranks%rank == 0 .and. stderr_is_terminal()
         shown = .false.
         call system_clock(clock0, clock_rate)
         clock_shown = clock0
-        call monte_carlo_v4(scene, c%mean, c%sd, c%seed, 1, c%v4(:c%n), c%e(:c%n), c%counts, &
-            stat, msg, progress=show_progress, auto=c%precision == "auto")
-        call stop_unless_normal(stat, msg)
-        c%escalated_nmax = c%counts%escalated
-        if (c%nmax > c%n) then
-            call monte_carlo_v4(scene, c%mean, c%sd, c%seed, c%n + 1, c%v4(c%n + 1:), &
-                c%e(c%n + 1:), counts_rest, stat, msg, progress=show_progress, &
-                auto=c%precision == "auto")
-            call stop_unless_normal(stat, msg)
-            c%escalated_nmax = c%escalated_nmax + counts_rest%escalated
+        if (b_own_last >= b_own_first) then
+            lo = (b_own_first - 1)*mc_block_size + 1
+            hi = min(b_own_last*mc_block_size, c%nmax)
+            if (lo <= c%n) call run_part(lo, min(hi, c%n), main_counts)
+            if (hi > c%n) call run_part(max(lo, c%n + 1), hi, rest_counts)
         end if
         call system_clock(clock1)
         if (shown) write (error_unit, "(a)") ""
         seconds = real(clock1 - clock0, dp)/real(clock_rate, dp)
     end subroutine run_stream
+
+    !> Samples first ... last of the stream, with the counts of each block
+    !> they touch into block_counts at the block's index.
+    subroutine run_part(first, last, block_counts)
+        integer, intent(in) :: first, last
+        type(mc_counts_t), intent(inout) :: block_counts(:)
+        type(mc_counts_t) :: counts
+        integer :: b_first, b_last
+        b_first = (first - 1)/mc_block_size + 1
+        b_last = (last - 1)/mc_block_size + 1
+        call monte_carlo_v4(scene, c%mean, c%sd, c%seed, first, c%v4(first:last), &
+            c%e(first:last), counts, stat, msg, progress=show_progress, &
+            auto=c%precision == "auto", per_block=block_counts(b_first:b_last))
+        call stop_unless_normal(stat, msg)
+    end subroutine run_part
+
+    !> Every block's samples and counts to rank 0 (nothing to do on one
+    !> process): a block's record is its v4, its e, then its main and rest counts.
+    subroutine gather_stream()
+        type(record_t), allocatable :: records(:)
+        integer(int8), allocatable :: bytes(:)
+        integer :: b, lo, hi, k, n_v, n_c
+        if (ranks%n_ranks == 1) return
+        allocate (records(n_blocks))
+        do b = b_own_first, b_own_last
+            lo = (b - 1)*mc_block_size + 1
+            hi = min(b*mc_block_size, c%nmax)
+            records(b)%bytes = [transfer(c%v4(lo:hi), [0_int8]), transfer(c%e(lo:hi), [0_int8]), &
+                transfer(main_counts(b), [0_int8]), transfer(rest_counts(b), [0_int8])]
+        end do
+        call gather_records(ranks, layout_blocks, records, stat, rank_msg)
+        call stop_unless_normal(stat, rank_msg)
+        if (ranks%rank /= 0) return
+        n_c = size(transfer(main_counts(1), [0_int8]))
+        do b = 1, n_blocks
+            lo = (b - 1)*mc_block_size + 1
+            hi = min(b*mc_block_size, c%nmax)
+            n_v = size(transfer(c%v4(lo:hi), [0_int8]))
+            if (size(records(b)%bytes) /= 2*n_v + 2*n_c) call fail("block " &
+                //itoa(b)//" of the stream: its record gathered on rank 0 is damaged")
+            bytes = records(b)%bytes
+            k = 0
+            c%v4(lo:hi) = transfer(bytes(k + 1:k + n_v), c%v4(lo:hi))
+            k = k + n_v
+            c%e(lo:hi) = transfer(bytes(k + 1:k + n_v), c%e(lo:hi))
+            k = k + n_v
+            main_counts(b) = transfer(bytes(k + 1:k + n_c), main_counts(b))
+            rest_counts(b) = transfer(bytes(k + n_c + 1:k + 2*n_c), rest_counts(b))
+            deallocate (records(b)%bytes)
+        end do
+    end subroutine gather_stream
+
+    !> The counts of the main sample and the runs escalated in the whole
+    !> stream, the blocks' counts added in block order (integers and a
+    !> maximum: the same for any split of the blocks).
+    subroutine add_counts()
+        integer :: b
+        c%counts = mc_counts_t()
+        c%escalated_nmax = 0
+        do b = 1, n_blocks
+            associate (m => main_counts(b), t => c%counts)
+                t%runs = t%runs + m%runs
+                t%redraws = t%redraws + m%redraws
+                t%collisions = t%collisions + m%collisions
+                t%collapsed = t%collapsed + m%collapsed
+                t%incomplete = t%incomplete + m%incomplete
+                t%escalated = t%escalated + m%escalated
+                t%bound_max = max(t%bound_max, m%bound_max)
+            end associate
+            c%escalated_nmax = c%escalated_nmax + main_counts(b)%escalated &
+                + rest_counts(b)%escalated
+        end do
+    end subroutine add_counts
 
     !> On a terminal, after report_after seconds: the share of the runs done,
     !> on one line of stderr rewritten in place.

@@ -230,9 +230,12 @@ contains
     !> `counts%escalated`): the collision sequence and count are real128's,
     !> and v4 lies within `counts%bound_max` of real128's. `progress`, if
     !> present, is called (by one thread at a time) after each block with the
-    !> samples done.
+    !> samples done. `per_block`, if present, gets the counts of each block
+    !> that first..last touches, in block order (b_last - b_first + 1 of them):
+    !> `counts` is their sum, so partial results of several calls (or
+    !> processes) add up in block order to the counts of one call.
     subroutine monte_carlo_v4(scene, mean, sd, seed, first, v4, e_samples, counts, stat, msg, &
-        lean, progress, auto)
+        lean, progress, auto, per_block)
         type(scene_t), intent(in) :: scene
         real(qp), intent(in) :: mean, sd
         integer, intent(in) :: seed, first
@@ -242,6 +245,7 @@ contains
         character(len=*), intent(out) :: msg
         logical, intent(in), optional :: lean, auto
         procedure(progress_report), optional :: progress
+        type(mc_counts_t), intent(out), optional :: per_block(:)
         type(mc_counts_t), allocatable :: block_counts(:)
         type(lean_row_t) :: probe
         real(dp) :: mean_d, sd_d
@@ -268,6 +272,14 @@ contains
         last = first + size(v4) - 1
         b_first = (first - 1)/mc_block_size + 1
         b_last = (last - 1)/mc_block_size + 1
+        if (present(per_block)) then
+            if (size(per_block) < b_last - b_first + 1) then
+                stat = status_invalid
+                write (msg, "(a, i0, a, i0)") "per_block: size ", size(per_block), &
+                    ": allowed at least the blocks touched, ", b_last - b_first + 1
+                return
+            end if
+        end if
         allocate (block_counts(b_first:b_last))
         done = 0
         total = size(v4)
@@ -291,6 +303,7 @@ contains
             counts%escalated = counts%escalated + block_counts(b)%escalated
             counts%bound_max = max(counts%bound_max, block_counts(b)%bound_max)
         end do
+        if (present(per_block)) per_block(:b_last - b_first + 1) = block_counts
 
     contains
 

@@ -47,7 +47,8 @@ contains
             new_unittest("single_impact_bound", test_single_impact_bound), &
             new_unittest("radix_sort_orders_doubles", test_radix_sort), &
             new_unittest("lean_mc_equals_engine_mc", test_lean_mc), &
-            new_unittest("mc_same_for_any_threads", test_threads) &
+            new_unittest("mc_same_for_any_threads", test_threads), &
+            new_unittest("mc_block_counts_add_up", test_block_counts) &
             ]
     end function collect_monte_carlo
 
@@ -364,6 +365,41 @@ contains
         call scene_init(scene, stat, msg, p=5)
         call check(error, .not. cubic_law_applies(scene), "p = 5: no cubic law")
     end subroutine test_single_impact_bound
+
+    !> The counts of each block (per_block) add up to the call's counts, and a
+    !> stream of three blocks run in two calls cut inside the second block
+    !> gives, block by block, the counts of one call (what c12-c2 adds up
+    !> across MPI ranks); too short a per_block is refused.
+    subroutine test_block_counts(error)
+        type(error_t), allocatable, intent(out) :: error
+        integer, parameter :: n = 25000, cut = 13000
+        type(scene_t) :: scene
+        type(mc_counts_t) :: counts, counts_a, counts_b, one(3), part_a(2), part_b(2)
+        real(dp) :: v4(n), e(n)
+        integer :: stat
+        character(len=200) :: msg
+        call scene_init(scene, stat, msg)
+        call monte_carlo_v4(scene, m_def, s_def, 12, 1, v4, e, counts, stat, msg, auto=.true., &
+            per_block=one)
+        call check(error, stat == status_normal, "refused: "//trim(msg))
+        if (allocated(error)) return
+        call check(error, sum(one%runs) == counts%runs .and. sum(one%redraws) == counts%redraws &
+            .and. sum(one%collisions) == counts%collisions .and. sum(one%escalated) &
+            == counts%escalated .and. maxval(one%bound_max) == counts%bound_max, &
+            "per-block counts do not add up to the call's")
+        call monte_carlo_v4(scene, m_def, s_def, 12, 1, v4(:cut), e(:cut), counts_a, stat, msg, &
+            auto=.true., per_block=part_a)
+        call monte_carlo_v4(scene, m_def, s_def, 12, cut + 1, v4(cut + 1:), e(cut + 1:), &
+            counts_b, stat, msg, auto=.true., per_block=part_b)
+        call check(error, one(1)%runs == part_a(1)%runs .and. one(2)%runs == part_a(2)%runs &
+            + part_b(1)%runs .and. one(3)%collisions == part_b(2)%collisions .and. &
+            one(2)%collisions == part_a(2)%collisions + part_b(1)%collisions, &
+            "counts of a stream cut in two calls differ block by block")
+        call monte_carlo_v4(scene, m_def, s_def, 12, 1, v4, e, counts, stat, msg, &
+            per_block=part_a)
+        call check(error, stat == status_invalid .and. index(msg, "per_block") > 0, &
+            "too short a per_block accepted: "//trim(msg))
+    end subroutine test_block_counts
 
     !> The radix sort orders doubles of both signs, zeros, subnormals, huge
     !> values and repeats as the insertion sort of real128 copies does.
