@@ -39,19 +39,8 @@ program c12_b1
     type(event_log_t), save :: thread_events
     integer, allocatable, save :: thread_pairs(:)
     !$omp threadprivate(thread_scene, thread_run, thread_events, thread_pairs)
-    !> The changes found in one interval of the scan.
-    type :: found_t
-        real(qp), allocatable :: e(:)
-    end type found_t
 
     call define_keys()
-    call read_keys(cli, scene)
-    out = cli%get_word("out")
-    n_scan = cli%get_int("n_scan")
-    resolution = cli%get_real("resolution")
-    n_bisect_max = cli%get_int("n_bisect_max")
-    tol_fine = cli%get_real("tol_fine")
-
     call scan()
     call find_changes()
     call write_scan()
@@ -63,7 +52,7 @@ program c12_b1
 
 contains
 
-    !> The keys of c12-b1.
+    !> The keys of c12-b1, read from the command line.
     subroutine define_keys()
         call start_program(cli, "c12-b1", &
             "C12 task b1: n(e) from e = 1 down to 0, its intervals of constant n and"//nl// &
@@ -77,6 +66,12 @@ contains
         call cli%add_real("tol_fine", "1e-4000", "tolerance of the runs near e_crit", &
             lo=1.0e-4900_qp, hi=0.5_qp)
         call add_scene_keys(cli, e_set_by="the scan of e")
+        call read_keys(cli, scene)
+        out = cli%get_word("out")
+        n_scan = cli%get_int("n_scan")
+        resolution = cli%get_real("resolution")
+        n_bisect_max = cli%get_int("n_bisect_max")
+        tol_fine = cli%get_real("tol_fine")
     end subroutine define_keys
 
     !> Step 1: a dense scan of e from 1 down to 0 with the scene's own tolerance.
@@ -107,6 +102,10 @@ contains
     !> independent: they are bisected in parallel (OpenMP), each thread on its
     !> own scene and run, and their changes joined in the scan's order.
     subroutine find_changes()
+        !> The changes found in one interval of the scan.
+        type :: found_t
+            real(qp), allocatable :: e(:)
+        end type found_t
         type(found_t), allocatable :: found(:)
         integer :: i
         allocate (found(n_scan - 1))
