@@ -8,11 +8,12 @@
 !> rules, and the certificate is applied there too.
 module sphere_row_auto
     use sphere_row_kinds, only: dp, qp
-    use sphere_row_engine_qp, only: scene_t, run_t, bounds_t, simulate_wp, &
+    use sphere_row_status, only: event_collision
+    use sphere_row_engine_qp, only: scene_t, run_t, bounds_t, event_log_t, simulate_wp, &
         simulate_certified_wp
     use sphere_row_engine_dp, only: scene_dp_t => scene_t, run_dp_t => run_t, &
-        bounds_dp_t => bounds_t, certified_dp => simulate_certified_wp, &
-        simulate_dp => simulate_wp
+        bounds_dp_t => bounds_t, event_log_dp_t => event_log_t, &
+        certified_dp => simulate_certified_wp, simulate_dp => simulate_wp
     implicit none
     private
     public :: auto_t, simulate_auto, simulate_in_dp
@@ -33,20 +34,32 @@ module sphere_row_auto
 contains
 
     !> Run `scene` in the precision it needs; `run` holds the answer in
-    !> real128 whichever kind computed it.
-    subroutine simulate_auto(scene, run, auto)
+    !> real128 whichever kind computed it, and `pairs`, if present, its
+    !> collision sequence (the left sphere of each pair, in order). A scene
+    !> answered in real128 is certified too unless `certify_qp` is false
+    !> (then auto%certified is false: a sweep that needs only the answer
+    !> saves that second run).
+    subroutine simulate_auto(scene, run, auto, pairs, certify_qp)
         type(scene_t), intent(in) :: scene
         type(run_t), intent(inout) :: run
         type(auto_t), intent(out) :: auto
+        integer, allocatable, intent(inout), optional :: pairs(:)
+        logical, intent(in), optional :: certify_qp
         type(scene_dp_t) :: low
         type(run_dp_t) :: run_low
         type(bounds_dp_t) :: bounds_low
         type(bounds_t) :: bounds
         type(run_t) :: check
+        type(event_log_dp_t) :: log_low
+        type(event_log_t) :: log
         auto%why_not_dp = "the scene's values are beyond real64"
         if (fits_dp(scene)) then
             call to_dp(scene, low)
-            call certified_dp(low, run_low, bounds_low)
+            if (present(pairs)) then
+                call certified_dp(low, run_low, bounds_low, log_low)
+            else
+                call certified_dp(low, run_low, bounds_low)
+            end if
             auto%why_not_dp = bounds_low%why
             if (bounds_low%certified) bounds_low%certified = finite(run_low, bounds_low)
             if (bounds_low%certified) then
@@ -54,11 +67,21 @@ contains
                 auto%answered = "dp"
                 auto%certified = .true.
                 auto%v_bound = real(maxval(bounds_low%v), qp)
+                if (present(pairs)) pairs = pack(log_low%first(1:log_low%n), &
+                    log_low%kind(1:log_low%n) == event_collision)
                 return
             end if
         end if
-        call simulate_wp(scene, run)
+        if (present(pairs)) then
+            call simulate_wp(scene, run, log)
+            pairs = pack(log%first(1:log%n), log%kind(1:log%n) == event_collision)
+        else
+            call simulate_wp(scene, run)
+        end if
         auto%answered = "qp"
+        if (present(certify_qp)) then
+            if (.not. certify_qp) return
+        end if
         call simulate_certified_wp(scene, check, bounds)
         auto%certified = bounds%certified .and. check%n == run%n .and. check%status == run%status
         if (auto%certified) auto%v_bound = maxval(bounds%v)

@@ -3,13 +3,13 @@
 !> critical restitution below which the collisions never end.
 program c12_b1
     use sphere_row, only: qp, scene_t, run_t, event_log_t, simulate, str, status_word, &
-        status_normal, status_collapsed, itoa
+        status_normal, status_collapsed, itoa, auto_t, simulate_auto
     use sphere_row_tables, only: open_table, write_answer, answer_header, tab
     use sphere_row_analysis, only: sequence_of, sequence_text, sequence_hash, tail_period, &
         critical_restitution
     use sphere_row_bisection, only: bisect, bisect_changes
     use sphere_row_study_cli, only: cli_t, add_scene_keys, start_program, read_keys, &
-        stop_unless_normal
+        stop_unless_normal, add_precision_key, precision_is_auto
     use sphere_row_sorting, only: sort
     implicit none
     character(len=*), parameter :: nl = new_line("a")
@@ -33,6 +33,8 @@ program c12_b1
     integer, allocatable :: n_scan_runs(:), status_scan(:)
     integer(8), allocatable :: class_scan(:)
     integer(8) :: class_mid
+    !> The keys precision = auto (scan and bisections) and critical = yes.
+    logical :: auto_runs, with_critical
     !> A thread's own scene, run and log for the bisections of step 2.
     type(scene_t), save :: thread_scene
     type(run_t), save :: thread_run
@@ -45,9 +47,9 @@ program c12_b1
     call find_changes()
     call write_scan()
     call write_intervals()
-    call critical_by_simulation()
-    call critical_from_cycle()
-    call write_critical()
+    if (with_critical) call critical_by_simulation()
+    if (with_critical) call critical_from_cycle()
+    if (with_critical) call write_critical()
     call write_answers()
 
 contains
@@ -65,13 +67,19 @@ contains
             //"not bisected", lo=1)
         call cli%add_real("tol_fine", "1e-4000", "tolerance of the runs near e_crit", &
             lo=1.0e-4900_qp, hi=0.5_qp)
+        call cli%add_flag("critical", "yes", "also the critical restitution: bisection of" &
+            //" collapsed against finite runs with tol_fine, the collapse cycle's rate map, " &
+            //"b1_critical.tsv")
+        call add_precision_key(cli)
         call add_scene_keys(cli, e_set_by="the scan of e")
         call read_keys(cli, scene)
+        auto_runs = precision_is_auto(cli)
         out = cli%get_word("out")
         n_scan = cli%get_int("n_scan")
         resolution = cli%get_real("resolution")
         n_bisect_max = cli%get_int("n_bisect_max")
         tol_fine = cli%get_real("tol_fine")
+        with_critical = cli%get_flag("critical")
     end subroutine define_keys
 
     !> Step 1: a dense scan of e from 1 down to 0 with the scene's own tolerance.
@@ -239,6 +247,28 @@ contains
     subroutine write_answers()
         call open_table(out, "b1_answers.tsv", answer_header, unit, stat, msg)
         call stop_unless_normal(stat, msg)
+        if (with_critical) call write_critical_answers()
+        call write_answer(unit, "b1.e_quasi_plastic", str(e_quasi), "-", "-", "-", &
+            "largest e where the scene's default tolerance (the relative velocities fall "// &
+            "below epsilon v0) reports the quasi-plastic case: the definition's "// &
+            "'quasi-plastic case reached'")
+        call write_answer(unit, "b1.scan_points", itoa(n_scan), "-", "-", "-", &
+            "e from 1 down to 0 in equal steps")
+        call write_answer(unit, "b1.resolution", str(resolution), "-", "-", "-", &
+            "width to which each change of the scan's collision sequence is bisected")
+        call write_answer(unit, "b1.intervals", itoa(n_intervals), "-", "-", "-", &
+            "intervals of constant n and sequence found, each end bisected to "// &
+            str(resolution)//" (changes with n > "//itoa(n_bisect_max)//" on both sides are "// &
+            "left to the critical table)")
+        call write_answer(unit, "b1.n_at_e1", itoa(n_scan_runs(1)), "closed_form", &
+            itoa(scene%p - 1), itoa(n_scan_runs(1) - (scene%p - 1)), &
+            "e = 1: one collision per pair")
+        close (unit)
+    end subroutine write_answers
+
+    !> The answers about e_crit: from the collapse cycle and by simulation
+    !> against 3 - 2 sqrt(2), the power law of n near it, the fine tolerance.
+    subroutine write_critical_answers()
         if (e_c > 0) then
             call write_answer(unit, "b1.e_crit", str(e_c), "closed_form_3-2sqrt2", str(closed), &
                 str(e_c - closed), "e where the rate map of the collapse cycle "// &
@@ -261,26 +291,10 @@ contains
             "the collisions end after about pi/theta cycles")
         call write_answer(unit, "b1.prefactor", str(exp(intercept)), "-", "-", "-", &
             "n ~ prefactor (e - e_crit)^exponent")
-        call write_answer(unit, "b1.e_quasi_plastic", str(e_quasi), "-", "-", "-", &
-            "largest e where the scene's default tolerance (the relative velocities fall "// &
-            "below epsilon v0) reports the quasi-plastic case: the definition's "// &
-            "'quasi-plastic case reached'")
-        call write_answer(unit, "b1.scan_points", itoa(n_scan), "-", "-", "-", &
-            "e from 1 down to 0 in equal steps")
-        call write_answer(unit, "b1.resolution", str(resolution), "-", "-", "-", &
-            "width to which each change of the scan's collision sequence is bisected")
         call write_answer(unit, "b1.tol_fine", str(tol_fine), "-", "-", "-", &
             "tolerance of the runs near e_crit: the simulated bound, the cycle run and "// &
             "b1_critical.tsv")
-        call write_answer(unit, "b1.intervals", itoa(n_intervals), "-", "-", "-", &
-            "intervals of constant n and sequence found, each end bisected to "// &
-            str(resolution)//" (changes with n > "//itoa(n_bisect_max)//" on both sides are "// &
-            "left to the critical table)")
-        call write_answer(unit, "b1.n_at_e1", itoa(n_scan_runs(1)), "closed_form", &
-            itoa(scene%p - 1), itoa(n_scan_runs(1) - (scene%p - 1)), &
-            "e = 1: one collision per pair")
-        close (unit)
-    end subroutine write_answers
+    end subroutine write_critical_answers
 
     !> b1_intervals.tsv: the intervals between consecutive changes, each with its
     !> collision count and sequence; e_quasi is the top of the collapsed ones.
@@ -310,7 +324,6 @@ contains
                 write (unit, "(a)") str(lo)//tab//str(hi)//tab//str(hi - lo)//tab// &
                     itoa(run%n)//tab//status_word(run%status)//tab//"-"
             else
-                call sequence_of(events, pairs)
                 write (unit, "(a)") str(lo)//tab//str(hi)//tab//str(hi - lo)//tab// &
                     itoa(run%n)//tab//status_word(run%status)//tab//sequence_text(pairs)
             end if
@@ -321,7 +334,6 @@ contains
         last_class = class_mid
         call classify(1.0_qp, class_mid)
         if (class_mid /= last_class) then
-            call sequence_of(events, pairs)
             write (unit, "(a)") str(1.0_qp)//tab//str(1.0_qp)//tab//str(0.0_qp)//tab// &
                 itoa(run%n)//tab//status_word(run%status)//tab//sequence_text(pairs)
             n_intervals = n_intervals + 1
@@ -364,7 +376,8 @@ contains
         call classify_with(e, scene, run, events, pairs, class)
     end subroutine classify
 
-    !> The class of the run at e on a scene, run and log of the caller's.
+    !> The class of the run at e on a scene, run and log of the caller's;
+    !> on_pairs is left with its collision sequence.
     subroutine classify_with(e, on_scene, on_run, on_events, on_pairs, class)
         real(qp), intent(in) :: e
         type(scene_t), intent(inout) :: on_scene
@@ -372,12 +385,17 @@ contains
         type(event_log_t), intent(inout) :: on_events
         integer, allocatable, intent(inout) :: on_pairs(:)
         integer(8), intent(out) :: class
+        type(auto_t) :: auto
         on_scene%e = e
-        call simulate(on_scene, on_run, on_events)
+        if (auto_runs) then
+            call simulate_auto(on_scene, on_run, auto, on_pairs, certify_qp=.false.)
+        else
+            call simulate(on_scene, on_run, on_events)
+            call sequence_of(on_events, on_pairs)
+        end if
         if (on_run%status == status_collapsed) then
             class = collapsed_class
         else
-            call sequence_of(on_events, on_pairs)
             class = sequence_hash(on_pairs)
         end if
     end subroutine classify_with

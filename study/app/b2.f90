@@ -3,36 +3,54 @@
 !> constant collision sequence every final velocity is a polynomial in e.
 program c12_b2
     use sphere_row, only: qp, scene_t, run_t, event_log_t, simulate, str, status_word, &
-        status_normal, itoa
+        status_normal, itoa, auto_t, simulate_auto
     use sphere_row_tables, only: open_table, write_answer, answer_header, tab
     use sphere_row_analysis, only: sequence_of, sequence_text, sequence_hash, &
         sequence_polynomials, poly_eval
     use sphere_row_study_cli, only: cli_t, add_scene_keys, start_program, read_keys, &
-        stop_unless_normal
+        stop_unless_normal, add_precision_key, precision_is_auto
     implicit none
     character(len=*), parameter :: nl = new_line("a")
     !> Sequences longer than this are not written out as polynomials.
     integer, parameter :: max_listed = 20
+    !> Allowance for the rounding of a polynomial's evaluation in real(16),
+    !> in units of v0, above a grid point's certified bound.
+    real(qp), parameter :: eval_allowance = 1.0e-30_qp
+    !> One point of the grid: its run's count, status, final velocities,
+    !> collision sequence, the precision that answered and its bound.
+    type :: point_t
+        integer :: n = 0, status = 0
+        real(qp), allocatable :: v(:)
+        integer, allocatable :: pairs(:)
+        logical :: in_dp = .false.
+        !> The certified bound on the final velocities, and (a finite run)
+        !> the largest |v_i - P_i(e)|, P_i the polynomials of its sequence.
+        real(qp) :: v_bound = 0.0_qp, diff = 0.0_qp
+        !> Sphere p hit once (see single_hit_of).
+        logical :: single_hit = .false.
+    end type point_t
+    type(point_t), allocatable :: points(:)
     type(cli_t) :: cli
     character(len=:), allocatable :: out, header, line
     character(len=300) :: msg
-    logical :: single_hit, equal, contiguous
+    logical :: equal, contiguous, auto_runs
     type(scene_t) :: scene
     type(run_t) :: run
-    type(event_log_t) :: events
     integer, allocatable :: pairs(:)
     real(qp), allocatable :: coef(:, :)
-    integer :: stat, unit, unit_forms, i, j, n_grid, p, n_poly, n_single
+    integer :: stat, unit, unit_forms, i, j, n_grid, p, n_poly, n_single, n_beyond, n_dp
     integer(8), allocatable :: seen(:)
-    real(qp) :: e, diff, max_diff, single, max_single, e_single_min, v_plain
+    real(qp) :: e, max_diff, max_single, e_single_min, v_plain
 
     call start_program(cli, "c12-b2", &
         "C12 task b2: final velocities v_i(e) from e = 1 down to 0, each compared"//nl// &
         "with the polynomial in e of its own collision sequence."//nl// &
         "Writes OUT/b2_velocities.tsv, b2_closed_forms.tsv, b2_answers.tsv.")
     call cli%add_int("n_grid", "1001", "points of the grid of e in [0, 1]", lo=2)
+    call add_precision_key(cli)
     call add_scene_keys(cli, e_set_by="the grid of e")
     call read_keys(cli, scene)
+    auto_runs = precision_is_auto(cli)
     out = cli%get_word("out")
     n_grid = cli%get_int("n_grid")
 
@@ -61,65 +79,150 @@ contains
 
     !> The grid of e from 1 down to 0: one row of final velocities per point,
     !> each finite run against the polynomials of its sequence and, where sphere
-    !> p is hit once, against the single-hit closed form.
+    !> p is hit once, against the single-hit closed form. The points are
+    !> independent: they run and are compared in parallel (OpenMP), and the
+    !> rows are formatted, written and counted in order afterwards, so the
+    !> tables do not depend on the threads. (No text is made inside the
+    !> parallel loop: gfortran 12 mixes up the lengths of character function
+    !> results of deferred length made on two threads at once.)
     subroutine tabulate()
+        allocate (points(n_grid))
+        call run_grid()
         allocate (seen(0))
         max_diff = 0
         max_single = 0
         n_poly = 0
         n_single = 0
+        n_beyond = 0
+        n_dp = count(points%in_dp)
         e_single_min = 1
         contiguous = .true.
         do j = 1, n_grid
-            e = 1.0_qp - real(j - 1, qp)/real(n_grid - 1, qp)
-            scene%e = e
-            call simulate(scene, run, events)
-            line = str(e)//tab//itoa(run%n)//tab//status_word(run%status)
-            do i = 1, p
-                line = line//tab//str(run%v(i))
-            end do
-            if (run%status == status_normal) then
-                call compare_closed_forms()
-            else
-                contiguous = .false.
-                line = line//tab//"-"//tab//"-"
-            end if
-            write (unit, "(a)") line
+            e = grid_e(j)
+            associate (pt => points(j))
+                line = str(e)//tab//itoa(pt%n)//tab//status_word(pt%status)
+                do i = 1, p
+                    line = line//tab//str(pt%v(i))
+                end do
+                if (pt%status == status_normal) then
+                    call count_closed_forms(pt)
+                    line = line//tab//str(pt%diff)//tab// &
+                        merge_text(pt%single_hit, str(single_hit_v(e)), "-")
+                else
+                    contiguous = .false.
+                    line = line//tab//"-"//tab//"-"
+                end if
+                write (unit, "(a)") line
+            end associate
         end do
         close (unit)
         close (unit_forms)
     end subroutine tabulate
 
-    !> The finite run at grid point e against the polynomials of its own
-    !> sequence (listed once per sequence) and the single-hit closed form.
-    subroutine compare_closed_forms()
-        call sequence_of(events, pairs)
-        call sequence_polynomials(scene%m, scene%v0, pairs, coef)
-        diff = 0
-        do i = 1, p
-            diff = max(diff, abs(run%v(i) - poly_eval(coef(:, i), e)))
+    !> Every point's run, in the precision it needs (precision = auto) or in
+    !> real(16), each thread on its own scene and run; then its comparison
+    !> with the closed forms.
+    subroutine run_grid()
+        type(scene_t) :: mine
+        type(run_t) :: got
+        type(event_log_t) :: log
+        type(auto_t) :: auto
+        integer :: k
+        !$omp parallel do schedule(dynamic, 8) default(shared) &
+        !$omp private(k, mine, got, log, auto)
+        do k = 1, n_grid
+            mine = scene
+            mine%e = grid_e(k)
+            associate (pt => points(k))
+                if (auto_runs) then
+                    call simulate_auto(mine, got, auto, pt%pairs, certify_qp=.false.)
+                    pt%in_dp = auto%answered == "dp"
+                    pt%v_bound = mine%v0*auto%v_bound
+                else
+                    call simulate(mine, got, log)
+                    call sequence_of(log, pt%pairs)
+                end if
+                pt%n = got%n
+                pt%status = got%status
+                pt%v = got%v
+                if (pt%status == status_normal) then
+                    pt%diff = polynomial_difference(pt, mine%e)
+                    pt%single_hit = single_hit_of(pt%pairs)
+                end if
+            end associate
         end do
-        max_diff = max(max_diff, diff)
+        !$omp end parallel do
+    end subroutine run_grid
+
+    !> The largest |v_i - P_i(e)| of a finite run at e, P_i the polynomials in
+    !> e of its own collision sequence.
+    real(qp) function polynomial_difference(pt, e_pt) result(d)
+        type(point_t), intent(in) :: pt
+        real(qp), intent(in) :: e_pt
+        real(qp), allocatable :: c(:, :)
+        integer :: q
+        call sequence_polynomials(scene%m, scene%v0, pt%pairs, c)
+        d = 0
+        do q = 1, size(pt%v)
+            d = max(d, abs(pt%v(q) - poly_eval(c(:, q), e_pt)))
+        end do
+    end function polynomial_difference
+
+    !> Whether sphere p is hit once, by sphere p-1, after the impulse ran down
+    !> the row of equal spheres: the closed form v_p = v0 ((1+e)/2)^(p-1).
+    pure logical function single_hit_of(seq) result(single_hit)
+        integer, intent(in) :: seq(:)
+        integer :: q
+        single_hit = equal .and. count(seq == p - 1) == 1 .and. size(seq) >= p - 1
+        if (single_hit) single_hit = all(seq(:p - 1) == [(q, q=1, p - 1)])
+    end function single_hit_of
+
+    !> The single-hit closed form of v_p at e.
+    pure real(qp) function single_hit_v(e_pt)
+        real(qp), intent(in) :: e_pt
+        single_hit_v = scene%v0*((1 + e_pt)/2)**(p - 1)
+    end function single_hit_v
+
+    !> `yes` if `flag`, else `no` (both texts are evaluated).
+    pure function merge_text(flag, yes, no) result(text)
+        logical, intent(in) :: flag
+        character(len=*), intent(in) :: yes, no
+        character(len=:), allocatable :: text
+        if (flag) then
+            text = yes
+        else
+            text = no
+        end if
+    end function merge_text
+
+    !> Point j of the grid: e from 1 down to 0 in equal steps.
+    pure real(qp) function grid_e(j)
+        integer, intent(in) :: j
+        grid_e = 1.0_qp - real(j - 1, qp)/real(n_grid - 1, qp)
+    end function grid_e
+
+    !> A finite point at e, in grid order: its difference from its
+    !> polynomials against its certified bound, its single-hit closed form,
+    !> and its sequence's polynomials listed when first met.
+    subroutine count_closed_forms(pt)
+        type(point_t), intent(in) :: pt
+        max_diff = max(max_diff, pt%diff)
+        if (pt%diff > pt%v_bound + eval_allowance*scene%v0) n_beyond = n_beyond + 1
         n_poly = n_poly + 1
-        line = line//tab//str(diff)
-        ! sphere p is hit once, by sphere p-1, after the impulse ran down the row
-        single_hit = equal .and. count(pairs == p - 1) == 1 .and. size(pairs) >= p - 1
-        if (single_hit) single_hit = all(pairs(:p - 1) == [(i, i=1, p - 1)])
-        if (single_hit) then
-            single = scene%v0*((1 + e)/2)**(p - 1)
-            max_single = max(max_single, abs(run%v(p) - single))
+        if (pt%single_hit) then
+            max_single = max(max_single, abs(pt%v(p) - single_hit_v(e)))
             n_single = n_single + 1
             if (contiguous) e_single_min = e
-            line = line//tab//str(single)
         else
             contiguous = .false.
-            line = line//tab//"-"
         end if
+        pairs = pt%pairs
         if (size(pairs) <= max_listed .and. .not. any(seen == sequence_hash(pairs))) then
             seen = [seen, sequence_hash(pairs)]
+            call sequence_polynomials(scene%m, scene%v0, pairs, coef)
             call list_forms(e)
         end if
-    end subroutine compare_closed_forms
+    end subroutine count_closed_forms
 
     !> The answers of task b2: how far the grid agrees with the closed forms, and
     !> the plastic limit e = 0 against momentum conservation.
@@ -135,6 +238,13 @@ contains
             "0", str(max_diff), "largest |v_i(e) - P_i(e)| over the "//itoa(n_poly)// &
             " grid points with a finite run, P_i the polynomial in e of that run's own "// &
             "collision sequence (product of the maps (2)); listed in b2_closed_forms.tsv")
+        call write_answer(unit, "b2.points_in_real64", itoa(n_dp), "-", "-", "-", &
+            "grid points answered in real(8) under the rounding certificate (precision = "// &
+            "auto); the others in real(16)")
+        call write_answer(unit, "b2.beyond_bound", itoa(n_beyond), "required", "0", &
+            itoa(n_beyond), "finite grid points whose |v_i(e) - P_i(e)| exceeds the run's "// &
+            "certified bound (0 for real(16)) by more than "//str(eval_allowance)// &
+            " v0, the allowance for evaluating P_i in real(16)")
         if (equal) then
             call write_answer(unit, "b2.single_hit_e_min", str(e_single_min), "-", "-", "-", &
                 "smallest grid e of the range from e = 1 down in which sphere "//itoa(p)// &

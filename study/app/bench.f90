@@ -199,13 +199,29 @@ contains
     !> c12-c2 with its defaults (precision auto) and with precision=qp, each
     !> on one thread against the minimal real(16) loop of the same job
     !> (c12-minimal-loop), side by side; the runs c2 escalated; and c2 and the
-    !> sweeps of b1 and c12-methods on one thread against two.
+    !> sweeps (b1's scan, b2's grid, the stability map) on one thread against
+    !> two.
     subroutine side_by_side()
         character(len=:), allocatable :: runs, one, two
         real(qp) :: ta, tb, ratio
         integer :: k
-        character(len=*), parameter :: sweeps(3) = [character(len=12) :: "c12-c2", "c12-b1", &
-            "c12-methods"]
+        !> What runs on one thread against two: c2 and the sweeps (each the
+        !> whole process; the sweep alone where a program does more).
+        type :: sweep_t
+            character(len=40) :: key, command
+            character(len=120) :: note
+        end type sweep_t
+        type(sweep_t), parameter :: sweeps(*) = [ &
+            sweep_t("c12-c2", "c12-c2", "its defaults, 10^6 runs"), &
+            sweep_t("c12-c2.nmax_1e7", "c12-c2 nmax=10000000", "as make study runs it"), &
+            sweep_t("c12-b1", "c12-b1", "the whole task: scan, bisections of its changes, " &
+            //"and the serial search for e_crit"), &
+            sweep_t("c12-b1.sweep", "c12-b1 critical=no", "the scan of e and the bisections " &
+            //"of its changes"), &
+            sweep_t("c12-b2", "c12-b2 n_grid=20001", "the grid of e, 20 times denser than " &
+            //"the task's; its rows are formatted on one thread"), &
+            sweep_t("c12-methods.stability_map", "c12-methods work_precision=no", "the " &
+            //"stability map (the timed tables run one thing at a time by design)")]
         runs = "build/bench-runs"
         one = "OMP_NUM_THREADS=1 "
         two = "OMP_NUM_THREADS=2 "
@@ -232,12 +248,13 @@ contains
             tab//"median of c12-c2 precision=qp / c12-minimal-loop, pair by pair; target at " &
             //"most 1.2"
         do k = 1, size(sweeps)
-            call in_turn(one//bin//"/"//trim(sweeps(k))//" out="//runs, &
-                two//bin//"/"//trim(sweeps(k))//" out="//runs, ta, tb, ratio)
-            write (unit, "(a)") "openmp."//trim(sweeps(k))//".speedup_two_threads"//tab// &
+            call in_turn(one//bin//"/"//trim(sweeps(k)%command)//" out="//runs, &
+                two//bin//"/"//trim(sweeps(k)%command)//" out="//runs, ta, tb, ratio)
+            write (unit, "(a)") "openmp."//trim(sweeps(k)%key)//".speedup_two_threads"//tab// &
                 real_str(ratio, 3)//tab//"1"//tab//"median of wall(1 thread)/wall(2 threads)" &
-                //" pair by pair, "//real_str(ta, 3)//" s and "//real_str(tb, 3)//" s; " &
-                //itoa(cores())//" processors online"
+                //" pair by pair of `"//trim(sweeps(k)%command)//"`, "//real_str(ta, 3)// &
+                " s and "//real_str(tb, 3)//" s; "//itoa(cores())//" processors online; " &
+                //trim(sweeps(k)%note)
         end do
     end subroutine side_by_side
 

@@ -28,7 +28,7 @@ program c12_c2
         gather_records, layout_blocks
     use sphere_row_c2_tables, only: c2_sample_t, c2_statistics, c2_write_tables
     use sphere_row_study_cli, only: cli_t, add_scene_keys, start_program, read_keys, fail, &
-        stop_unless_normal
+        stop_unless_normal, add_precision_key, precision_is_auto
     use sphere_row_terminal, only: stderr_is_terminal
     use sphere_row_error, only: error_t
     implicit none
@@ -72,7 +72,7 @@ program c12_c2
     c%mean = cli%get_real("mean")
     c%sd = cli%get_real("sd")
     c%bins = cli%get_int("bins")
-    c%precision = cli%get_word("precision")
+    c%precision = trim(merge("auto", "qp  ", precision_is_auto(cli)))
     c%v0 = scene%v0
     call check_settings()
 
@@ -225,19 +225,15 @@ contains
         call cli%add_real("mean", "0.5", "mean of e; at least 10 % of the law in [0, 1]")
         call cli%add_real("sd", "0.05", "standard deviation of e", lo=0.0_qp, lo_open=.true.)
         call cli%add_int("bins", "100", "histogram bins", lo=1, hi=bins_most)
-        call cli%add_word("precision", "auto", "auto: real(8) where a rounding certificate" &
-            //" holds, else real(16); qp: real(16) for every run")
+        call add_precision_key(cli)
         call add_scene_keys(cli, e_set_by="the normal law of e")
     end subroutine define_keys
 
-    !> What the keys' own ranges cannot say: nmax >= n, the precision's name,
-    !> and enough of the law of e inside [0, 1] for the truncation to draw
-    !> again rarely.
+    !> What the keys' own ranges cannot say: nmax >= n and enough of the law
+    !> of e inside [0, 1] for the truncation to draw again rarely.
     subroutine check_settings()
         if (c%nmax < c%n) call fail("nmax = "//cli%get_text("nmax")//": allowed an integer " &
             //"n <= nmax <= "//itoa(n_most)//" (n = "//itoa(c%n)//")")
-        if (c%precision /= "auto" .and. c%precision /= "qp") call fail("precision = " &
-            //c%precision//": allowed auto or qp")
         if (.not. (1.0_dp - normal_mass_outside_unit(c%mean, c%sd) >= min_acceptance)) then
             call fail("mean = "//cli%get_text("mean")//", sd = "//cli%get_text("sd") &
                 //": under 10 % of the normal law lies in 0 <= e <= 1; allowed at least 10 %")

@@ -55,8 +55,10 @@ program c12_methods
     if (stat /= 0) call fail("out = "//out_dir//": the directory cannot be created")
 
     call method_list()
-    call work_precision()
-    call lap("work-precision and costs")
+    if (cli%get_flag("work_precision")) then
+        call work_precision()
+        call lap("work-precision and costs")
+    end if
     call stability()
     call lap("stability map, "//itoa(points)//" values of e")
     call min_distance()
@@ -86,6 +88,8 @@ contains
             hi=60.0_qp)
         call cli%add_int("points", "300", "values of e on the stability map", lo=8, hi=100000)
         call cli%add_int("max_steps", "20000000", "step budget of time stepping", lo=1)
+        call cli%add_flag("work_precision", "yes", "also the timed tables (work-precision" &
+            //" and costs); no: the stability map and the distances to e_c only")
     end subroutine define_keys
 
     !> The methods and settings compared; in_map marks those on the stability
@@ -200,7 +204,7 @@ contains
         type(method_t), allocatable :: mine(:)
         real(qp), allocatable :: es(:)
         real(qp) :: lo, hi
-        integer :: n_above, n_below, j, m, unit, row
+        integer :: n_above, n_below, j, k, m, unit, row
         ! per value of e and method: category, collisions, status; and the reference's
         integer, allocatable :: category(:, :), n_run(:, :), status_run(:, :)
         integer, allocatable :: n_ref(:), status_ref(:)
@@ -225,8 +229,10 @@ contains
             //"status"//tab//"status_ref"
         allocate (category(size(methods), points), n_run(size(methods), points), &
             status_run(size(methods), points), n_ref(points), status_ref(points))
-        !$omp parallel do schedule(dynamic) default(shared) private(j, m, scene, ref, run, mine)
-        do j = 1, points
+        ! from e = 0 up: the runs below e_c, the longest, are handed out first
+        !$omp parallel do schedule(dynamic) default(shared) private(k, j, m, scene, ref, run, mine)
+        do k = 1, points
+            j = points + 1 - k
             if (.not. allocated(mine)) mine = methods
             call scene_at(es(j), scene)
             call reference_run(scene, ref)

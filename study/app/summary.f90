@@ -84,7 +84,10 @@ contains
             "(b2_closed_forms.tsv) are exact dyadic rationals for equal masses. From e = 1 "// &
             "down to b2.single_hit_e_min the last sphere p is hit once, after each pair "// &
             "before it has passed on the factor (1+e)/2, so v_p = v0 ((1+e)/2)^(p-1) there. "// &
-            "Below e_crit all velocities are m1 v0/sum(m).")
+            "Below e_crit all velocities are m1 v0/sum(m). Each point runs in the precision "// &
+            "it needs (precision = auto): b2.points_in_real64 of them in real(8) under the "// &
+            "rounding certificate, the others in real(16); b2.beyond_bound finite points lie "// &
+            "farther from their polynomials than their certified bounds allow.")
     end subroutine sections_b
 
     !> The sections of tasks c1 and c2: the boundary value problem and the Monte

@@ -22,6 +22,7 @@ module sphere_row_study_cli
     implicit none
     private
     public :: cli_t, add_scene_keys, start_program, read_keys, fail, stop_unless_normal
+    public :: add_precision_key, precision_is_auto
 
     !> The running program's name, the prefix of its messages.
     character(len=:), allocatable :: program_name
@@ -35,6 +36,24 @@ module sphere_row_study_cli
     end interface fail
 
 contains
+
+    !> Register the key `precision` of a program whose many runs may each be
+    !> made in the precision they need: auto (the default) or qp.
+    pure subroutine add_precision_key(cli)
+        type(cli_t), intent(inout) :: cli
+        call cli%add_word("precision", "auto", "auto: real(8) where a rounding certificate" &
+            //" holds, else real(16); qp: real(16) for every run")
+    end subroutine add_precision_key
+
+    !> True for precision = auto, false for qp; anything else fails.
+    logical function precision_is_auto(cli) result(auto)
+        type(cli_t), intent(in) :: cli
+        character(len=:), allocatable :: word
+        word = cli%get_word("precision")
+        if (word /= "auto" .and. word /= "qp") call fail("precision = "//word// &
+            ": allowed auto or qp")
+        auto = word == "auto"
+    end function precision_is_auto
 
     !> Start the command line of program `name`: `about` is the paragraph of
     !> its `--help` (lines separated by new_line), and the key `out` names the

@@ -40,7 +40,9 @@ contains
             new_unittest("auto_definition_decisions", test_definition), &
             new_unittest("auto_family_decisions", test_family), &
             new_unittest("c2_one_and_two_threads_identical", test_threads), &
-            new_unittest("c2_precision_key_refused", test_precision_key) &
+            new_unittest("c2_precision_key_refused", test_precision_key), &
+            new_unittest("sweeps_one_and_two_threads_identical", test_sweep_threads), &
+            new_unittest("b1_auto_tables_equal_qp", test_b1_auto) &
             ]
     end function collect_auto
 
@@ -305,28 +307,99 @@ contains
         call execute_command_line("rm -rf "//dir//" "//dir//".err")
     end subroutine test_precision_key
 
-    !> Path of the c12-c2 executable as fpm builds it for the tests' profile,
-    !> linked anew (fpm relinks a program only when its own source changes, so
-    !> the old one is removed first); "" if it cannot be built.
+    !> The sweeps of c12-b1 (scan and bisections, critical=no) and c12-b2
+    !> (grid) on a coarse grid, on one thread and on two: the same tables,
+    !> byte for byte.
+    subroutine test_sweep_threads(error)
+        type(error_t), allocatable, intent(out) :: error
+        character(len=*), parameter :: dir = "build/test-sweep-threads"
+        character(len=*), parameter :: tables(5) = [character(len=20) :: "b1_scan.tsv", &
+            "b1_intervals.tsv", "b1_answers.tsv", "b2_velocities.tsv", "b2_answers.tsv"]
+        call run_twice(error, dir, "c12-b1", "n_scan=201 critical=no", "c12-b2", &
+            "n_grid=201", "OMP_NUM_THREADS=1 ", "OMP_NUM_THREADS=2 ", "", "", tables)
+    end subroutine test_sweep_threads
+
+    !> c12-b1 with precision=auto (real(8) where certified) and precision=qp
+    !> writes the same scan, intervals and answers, byte for byte: the
+    !> certificate makes counts and sequences exact.
+    subroutine test_b1_auto(error)
+        type(error_t), allocatable, intent(out) :: error
+        character(len=*), parameter :: dir = "build/test-b1-auto"
+        character(len=*), parameter :: tables(3) = [character(len=20) :: "b1_scan.tsv", &
+            "b1_intervals.tsv", "b1_answers.tsv"]
+        call run_twice(error, dir, "c12-b1", "n_scan=401 critical=no", "", "", "", "", &
+            " precision=auto", " precision=qp", tables)
+    end subroutine test_b1_auto
+
+    !> Programs a (and b, if named) with their keys, once with prefix p1 and
+    !> suffix s1 into dir/t1, once with p2 and s2 into dir/t2; then each of
+    !> `tables` compared between the two, byte for byte.
+    subroutine run_twice(error, dir, a, a_keys, b, b_keys, p1, p2, s1, s2, tables)
+        type(error_t), allocatable, intent(out) :: error
+        character(len=*), intent(in) :: dir, a, a_keys, b, b_keys, p1, p2, s1, s2
+        character(len=*), intent(in) :: tables(:)
+        character(len=:), allocatable :: path_a, path_b
+        integer :: j, status
+        path_a = program_path(a)
+        path_b = ""
+        if (len(b) > 0) path_b = program_path(b)
+        call check(error, len(path_a) > 0 .and. (len(b) == 0 .or. len(path_b) > 0), &
+            "the programs are not built")
+        if (allocated(error)) return
+        call execute_command_line("rm -rf "//dir//" && mkdir -p "//dir)
+        do j = 1, 2
+            call one(path_a, a_keys)
+            if (len(b) > 0) call one(path_b, b_keys)
+        end do
+        do j = 1, size(tables)
+            if (allocated(error)) exit
+            call execute_command_line("cmp -s "//dir//"/t1/"//trim(tables(j))//" "//dir//"/t2/" &
+                //trim(tables(j)), exitstat=status)
+            call check(error, status == 0, trim(tables(j))//" differs between the two runs")
+        end do
+        call execute_command_line("rm -rf "//dir)
+    contains
+        subroutine one(path, keys)
+            character(len=*), intent(in) :: path, keys
+            character(len=:), allocatable :: run
+            if (j == 1) then
+                run = p1//path//" "//keys//" out="//dir//"/t1"//s1
+            else
+                run = p2//path//" "//keys//" out="//dir//"/t2"//s2
+            end if
+            call execute_command_line(run//" > /dev/null", exitstat=status)
+            call check(error, status == 0, "failed: "//run)
+        end subroutine one
+    end subroutine run_twice
+
+    !> Path of the c12-c2 executable (see program_path), looked up once.
     function c2_path() result(path)
         character(len=:), allocatable :: path
         character(len=:), allocatable, save :: found
-        if (.not. allocated(found)) then
-            found = built_path()
-            if (len(found) > 0) call execute_command_line("rm -f "//found)
-            found = built_path()
-        end if
+        if (.not. allocated(found)) found = program_path("c12-c2")
         path = found
     end function c2_path
 
-    !> What `fpm run --runner echo c12-c2` names (building it if needed).
-    function built_path() result(path)
+    !> Path of a study program as fpm builds it for the tests' profile,
+    !> linked anew (fpm relinks a program only when its own source changes, so
+    !> the old one is removed first); "" if it cannot be built.
+    function program_path(name) result(path)
+        character(len=*), intent(in) :: name
         character(len=:), allocatable :: path
-        character(len=*), parameter :: list = "build/test-c2-path.txt"
+        path = built_path(name)
+        if (len(path) > 0) call execute_command_line("rm -f "//path)
+        path = built_path(name)
+    end function program_path
+
+    !> What `fpm run --runner echo <name>` names (building it if needed).
+    function built_path(name) result(path)
+        character(len=*), intent(in) :: name
+        character(len=:), allocatable :: path
+        character(len=*), parameter :: list = "build/test-program-path.txt"
         character(len=:), allocatable :: text
         integer :: status, last
         path = ""
-        call execute_command_line("mkdir -p build && fpm run --runner echo c12-c2 > "//list &
+        call execute_command_line("mkdir -p build && fpm run --runner echo "//name//" > "//list &
             //" 2> /dev/null", exitstat=status)
         if (status /= 0) return
         text = read_text(list)
