@@ -106,8 +106,11 @@ contains
                 end do
                 if (pt%status == status_normal) then
                     call count_closed_forms(pt)
-                    line = line//tab//str(pt%diff)//tab// &
-                        merge_text(pt%single_hit, str(single_hit_v(e)), "-")
+                    if (pt%single_hit) then
+                        line = line//tab//str(pt%diff)//tab//str(single_hit_v(e))
+                    else
+                        line = line//tab//str(pt%diff)//tab//"-"
+                    end if
                 else
                     contiguous = .false.
                     line = line//tab//"-"//tab//"-"
@@ -182,18 +185,6 @@ contains
         real(qp), intent(in) :: e_pt
         single_hit_v = scene%v0*((1 + e_pt)/2)**(p - 1)
     end function single_hit_v
-
-    !> `yes` if `flag`, else `no` (both texts are evaluated).
-    pure function merge_text(flag, yes, no) result(text)
-        logical, intent(in) :: flag
-        character(len=*), intent(in) :: yes, no
-        character(len=:), allocatable :: text
-        if (flag) then
-            text = yes
-        else
-            text = no
-        end if
-    end function merge_text
 
     !> Point j of the grid: e from 1 down to 0 in equal steps.
     pure real(qp) function grid_e(j)
