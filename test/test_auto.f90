@@ -15,7 +15,7 @@ module test_auto
     !> Scan of n(e) for the breakpoints, and how close to each the values go.
     integer, parameter :: scan_points = 1000, offsets = 13
     !> Values of e drawn uniformly, and random rows of other masses and lengths.
-    integer, parameter :: uniform_values = 3000, random_rows = 2000
+    integer, parameter :: uniform_values = 3000, random_rows = 3200
     !> Collision cap of every run here (a random row may collapse slowly).
     integer, parameter :: cap = 4000
 

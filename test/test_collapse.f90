@@ -27,7 +27,9 @@ contains
             new_unittest("finite_counts_near_e_crit", test_near_critical), &
             new_unittest("three_sphere_threshold", test_three_spheres), &
             new_unittest("log_does_not_change_result", test_log_neutral), &
-            new_unittest("random_rows_finite_unchanged", test_random_rows) &
+            new_unittest("random_rows_finite_unchanged", test_random_rows), &
+            new_unittest("touching_cascade_matches_fallback", test_touching_cascade), &
+            new_unittest("long_rows_answer", test_long_rows) &
             ]
     end function collect_collapse
 
@@ -233,5 +235,74 @@ contains
         ! the comparison means something only if closed-form limits were taken
         call check(error, limited > scenes/20, "random rows: too few closed-form limits taken")
     end subroutine test_random_rows
+
+    !> At 0 < e < 1, touching rows (every gap closed; masses equal or over four
+    !> decades) struck by sphere 1: where the fallback rule alone answers, a
+    !> run with the certified limit of cascades through touching spheres ends
+    !> the same way with the same velocities. A limit taken where the cascade
+    !> in fact ends would show here as velocities far apart.
+    subroutine test_touching_cascade(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(scene_t) :: scene
+        type(run_t) :: fast, slow
+        real(qp) :: u(24)
+        integer :: stat, i, p, compared
+        character(len=200) :: msg
+        call seed_random(2718, 11)
+        compared = 0
+        do i = 1, 120
+            call random_number(u)
+            p = 3 + int(8*u(1))
+            call scene_init(scene, stat, msg, p=p, e=u(2), &
+                masses=merge(1.0_qp, 1.0e2_qp**(2*u(3:p + 2) - 1), u(24) < 0.5_qp), &
+                gaps=[(0.0_qp, stat=1, p - 1)], max_collisions=100000)
+            call simulate(scene, fast)
+            scene%closed_form_limits = .false.
+            call simulate(scene, slow)
+            if (slow%status == status_max_collisions .or. fast%closed_limits == 0) cycle
+            compared = compared + 1
+            call check(error, fast%status == slow%status .and. fast%n <= slow%n, &
+                "touching cascade: status or count differs from the fallback's")
+            if (allocated(error)) return
+            call check(error, all(abs(fast%v - slow%v) <= 1.0e-25_qp), &
+                "touching cascade: velocities differ from the fallback's")
+            if (allocated(error)) return
+        end do
+        call check(error, compared >= 20, "touching cascade: too few limits compared: " &
+            //achar(48 + compared/10)//achar(48 + mod(compared, 10)))
+    end subroutine test_touching_cascade
+
+    !> Long rows whose cascades through touching spheres used to run to the
+    !> collision cap: each now collapses within a few 10^4 collisions, the
+    !> equal-mass ones fully, to the row's mean velocity.
+    subroutine test_long_rows(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(scene_t) :: scene
+        type(run_t) :: run
+        integer :: stat, i, j
+        character(len=200) :: msg
+        integer, parameter :: rows(5) = [40, 64, 32, 20, 20]
+        real(qp), parameter :: e_values(5) = [0.5_qp, 0.3_qp, 0.6_qp, 0.1_qp, 0.1_qp]
+        real(qp) :: mean
+        do i = 1, size(rows)
+            call scene_init(scene, stat, msg, p=rows(i), e=e_values(i))
+            ! the last two alternate masses 1 and 1000, starting with either
+            if (i >= 4) scene%m = [(merge(1.0_qp, 1.0e3_qp, mod(j + i, 2) == 0), j=1, rows(i))]
+            call simulate(scene, run)
+            mean = scene%m(1)/sum(scene%m)
+            call check(error, run%status == status_collapsed .and. run%n < 60000, &
+                "long row "//achar(48 + i)//": no collapse within 60000 collisions")
+            if (allocated(error)) return
+            call check(error, abs(momentum(scene, run%v) - scene%m(1)) <= 1.0e-28_qp*sum(scene%m) &
+                .and. all(run%dy >= -scene%tol*scene%v0), &
+                "long row "//achar(48 + i)//": momentum, or a pair still closing")
+            if (allocated(error)) return
+            ! (with masses 1 and 1000 a light sphere 1 rebounds)
+            if (i > 3) cycle
+            call check(error, all(abs(run%v - mean) <= 1.0e-28_qp), &
+                "long row "//achar(48 + i)//": not every sphere at the mean velocity")
+            if (allocated(error)) return
+        end do
+    end subroutine test_long_rows
 
 end module test_collapse

@@ -122,14 +122,16 @@ contains
             [character(len=60) :: "collapse_by_p"], &
             "Seeded random rows (p from 2, masses equal or log-uniform over six decades, "// &
             "e uniform in [0, 1], a fifth of the gaps closed) run to their end with the "// &
-            "collapse limits in closed form (a plastic cascade pooled at e = 0, a collision "// &
-            "cycle certified to repeat for ever) and, for the first of them, with the "// &
-            "fallback alone (every rate and gap of a group insignificant). "// &
+            "collapse limits in closed form (a plastic cascade pooled at e = 0, a cascade "// &
+            "through touching spheres proven to merge by an invariant box of its momentum "// &
+            "ratios, a collision cycle certified to repeat for ever) and, for the first of "// &
+            "them, with the fallback alone (every rate and gap of a group insignificant). "// &
             field("collapse", "collapse.answered")//" of "// &
             field("collapse", "collapse.answered", check_value)//" rows end within the "// &
-            "collision cap (collapse_survey.tsv); the rest are cascades at one instant "// &
-            "through touching spheres at 0 < e < 1, whose binary collisions follow no "// &
-            "repeating order, so that neither a cycle nor the fallback ends them soon.")
+            "collision cap (collapse_survey.tsv); the rest collapse in ways no certificate "// &
+            "recognises yet (a touching cascade whose merge the box, which asks for a merge "// &
+            "in every order of the collisions, cannot prove; open-gap collapses that repeat "// &
+            "no pattern), which the fallback ends only slowly.")
         call section("ecrit", "e_crit(p): critical restitution of the struck row of p spheres", &
             [character(len=60) :: "ecrit"], &
             "For every p equal spheres (a = d = v0 = 1) a scan of e decides each run by the "// &
