@@ -269,8 +269,11 @@ test-mpi: prereqs $(BUILD_STAMP) $(MPI_STAMP) ## c12-ecrit and c12-c2 on 1, 2, 4
 	for np in 1 2 4; do \
 		run c2_np$$np $(call mpirun_np,$$np) $(MPI_BIN)/c12-c2 $(C2_QUICK); \
 		same c2_serial c2_np$$np $(C2_TABLES); done; \
+	lines=$$($(call mpirun_np,2) $(MPI_BIN)/c12-c2 nmax=0 2>&1 >/dev/null | grep -c '^c12-c2: ' || true); \
+	if [ "$$lines" != 1 ]; then echo "refused key on 2 ranks: told $$lines times"; failed=$$((failed + 1)); fi; \
 	if [ $$failed -gt 0 ]; then echo "test-mpi: $$failed runs or comparisons failed"; exit 1; fi; \
-	echo "test-mpi: c12-ecrit and c12-c2 on 1, 2 and 4 ranks and 1 and 2 threads wrote the same tables"
+	echo "test-mpi: c12-ecrit and c12-c2 on 1, 2 and 4 ranks and 1 and 2 threads wrote the same tables;" \
+		"a refused key is told once"
 
 docs: ## API documentation from the !> comments (FORD) in build/docs/index.html
 	@bash .ci/prereqs docs

@@ -961,8 +961,29 @@ contains
             write (output_unit, "(a)", advance="no") cli%usage()
             stop
         end if
-        if (allocated(error)) call fail(cli%name, error)
+        if (.not. allocated(error)) return
+        ! under an MPI launcher every rank reads the same command line: one
+        ! message, from the first rank, and every rank stops
+        if (launcher_rank() /= 0) stop 2, quiet=.true.
+        call fail(cli%name, error)
     end subroutine read_command_line
+
+    !> The rank an MPI launcher gave this process (OpenMPI, MPICH/Hydra, PMIx
+    !> name it in the environment), 0 if there is none.
+    integer function launcher_rank()
+        character(len=*), parameter :: names(3) = [character(len=20) :: &
+            "OMPI_COMM_WORLD_RANK", "PMI_RANK", "PMIX_RANK"]
+        character(len=16) :: value
+        integer :: i, length, stat, rank
+        launcher_rank = 0
+        do i = 1, size(names)
+            call get_environment_variable(trim(names(i)), value, length, stat)
+            if (stat /= 0 .or. length == 0) cycle
+            read (value, *, iostat=stat) rank
+            if (stat == 0) launcher_rank = rank
+            return
+        end do
+    end function launcher_rank
 
     !> For programs: print `name: message` as one line on stderr (control
     !> characters shown escaped) and stop with exit status 2.
