@@ -2,6 +2,7 @@
 !> helpers on samples with known answers, the rule for e outside [0, 1], and
 !> a small Monte Carlo against the exact law of v4.
 module test_monte_carlo
+    use, intrinsic :: iso_fortran_env, only: int64
     use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
     use sphere_row, only: dp, qp, scene_t, scene_init, status_normal, status_invalid, str
     use sphere_row_monte_carlo, only: normal_sampler_t, mc_counts_t, monte_carlo_v4, &
@@ -46,6 +47,7 @@ contains
             new_unittest("small_mc_against_closed_form", test_small_mc), &
             new_unittest("single_impact_bound", test_single_impact_bound), &
             new_unittest("radix_sort_orders_doubles", test_radix_sort), &
+            new_unittest("radix_sort_same_for_any_threads", test_radix_sort_threads), &
             new_unittest("lean_mc_equals_engine_mc", test_lean_mc), &
             new_unittest("mc_same_for_any_threads", test_threads), &
             new_unittest("mc_block_counts_add_up", test_block_counts) &
@@ -422,6 +424,40 @@ contains
         call radix_sort(x)
         call check(error, all(x == 0.5_dp), "equal values changed")
     end subroutine test_radix_sort
+
+    !> 10^5 doubles of both signs and many magnitudes, with zeros of both
+    !> signs and runs of equal values, sorted on one, two and three threads
+    !> (where built with OpenMP; three parts or more, one per thread): the
+    !> same bits each time, in ascending order, -0 before +0.
+    subroutine test_radix_sort_threads(error)
+        type(error_t), allocatable, intent(out) :: error
+        integer, parameter :: n = 100000
+        real(dp), allocatable :: x(:, :)
+        integer :: i, threads, t
+        allocate (x(n, 3))
+        do i = 1, n
+            x(i, 1) = (modulo(i*0.6180339887498949_dp, 1.0_dp) - 0.4_dp)*10.0_dp**mod(i, 11)
+        end do
+        x(1000:1999, 1) = -0.0_dp
+        x(2000:2999, 1) = 0.0_dp
+        x(50000:60000:7, 1) = 0.375_dp
+        x(:, 2) = x(:, 1)
+        x(:, 3) = x(:, 1)
+        threads = 1
+        !$ threads = omp_get_max_threads()
+        do t = 1, 3
+            !$ call omp_set_num_threads(t)
+            call radix_sort(x(:, t))
+        end do
+        !$ call omp_set_num_threads(threads)
+        call check(error, all(transfer(x(:, 2), 1_int64, n) == transfer(x(:, 1), 1_int64, n)) &
+            .and. all(transfer(x(:, 3), 1_int64, n) == transfer(x(:, 1), 1_int64, n)), &
+            "the sorted bits depend on the number of threads")
+        call check(error, all(x(:n - 1, 1) <= x(2:, 1)), "not in ascending order")
+        call check(error, sign(1.0_dp, x(count(x(:, 1) < 0.0_dp) + 1, 1)) < 0.0_dp &
+            .and. sign(1.0_dp, x(count(x(:, 1) <= 0.0_dp), 1)) > 0.0_dp, &
+            "the zeros are not -0 first, then +0")
+    end subroutine test_radix_sort_threads
 
     !> The Monte Carlo on the lean path and on the engine give the same
     !> samples and counts, bit for bit, over a stretch of the stream across a
