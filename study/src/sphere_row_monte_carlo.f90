@@ -463,34 +463,53 @@ contains
     !> and the shift (within a few sd of the mean) keeps the cancellation in
     !> sum d^2 - (sum d)^2/n to a factor of about 20; so mean and sd are good to
     !> about 1e-11 of sd, six orders below their own standard errors.
-    pure subroutine sample_moments(x, mean, sd)
+    !>
+    !> The chunks are summed on the OpenMP threads and their sums added in
+    !> chunk order: the same bits for any number of threads.
+    subroutine sample_moments(x, mean, sd)
         real(dp), intent(in) :: x(:)
         real(dp), intent(out) :: mean, sd
         integer, parameter :: chunk = 4096
-        real(dp) :: shift, s1, s2, c1, c2, d
-        integer :: i, j, n
+        real(dp), allocatable :: c1(:), c2(:)
+        real(dp) :: shift, s1, s2
+        integer :: j, n, chunks
         mean = 0.0_dp
         sd = 0.0_dp
         n = size(x)
         if (n == 0) return
         shift = x(1)
+        chunks = (n - 1)/chunk + 1
+        allocate (c1(chunks), c2(chunks))
+        !$omp parallel do schedule(static) default(shared) private(j) if (chunks > 1)
+        do j = 1, chunks
+            call shifted_sums(x((j - 1)*chunk + 1:min(n, j*chunk)), shift, c1(j), c2(j))
+        end do
+        !$omp end parallel do
         s1 = 0.0_dp
         s2 = 0.0_dp
-        do j = 1, n, chunk
-            c1 = 0.0_dp
-            c2 = 0.0_dp
-            do i = j, min(n, j + chunk - 1)
-                d = x(i) - shift
-                c1 = c1 + d
-                c2 = c2 + d*d
-            end do
-            s1 = s1 + c1
-            s2 = s2 + c2
+        do j = 1, chunks
+            s1 = s1 + c1(j)
+            s2 = s2 + c2(j)
         end do
         mean = shift + s1/n
         if (n == 1) return
         sd = sqrt(max(0.0_dp, (s2 - s1*(s1/n))/(n - 1)))
     end subroutine sample_moments
+
+    !> The sums of x - shift and of its square, added in the order of x.
+    pure subroutine shifted_sums(x, shift, s1, s2)
+        real(dp), intent(in) :: x(:), shift
+        real(dp), intent(out) :: s1, s2
+        real(dp) :: d
+        integer :: i
+        s1 = 0.0_dp
+        s2 = 0.0_dp
+        do i = 1, size(x)
+            d = x(i) - shift
+            s1 = s1 + d
+            s2 = s2 + d*d
+        end do
+    end subroutine shifted_sums
 
     !> Standard normal quantile z_p from GSL (a double, held exactly in real128).
     pure function normal_quantile(p) result(z)
@@ -536,18 +555,21 @@ contains
     !> Kolmogorov–Smirnov distance sup |F_n - F| of a sample to a continuous
     !> law F, from F at the sorted sample: the empirical function jumps from
     !> (i-1)/n to i/n at the i-th order statistic, so the supremum is attained
-    !> at one side of a jump.
-    pure function ks_distance(cdf_at_sorted) result(distance)
+    !> at one side of a jump. A maximum does not depend on the order it is
+    !> taken in: the sample is shared among the OpenMP threads.
+    function ks_distance(cdf_at_sorted) result(distance)
         real(dp), intent(in) :: cdf_at_sorted(:)
         real(dp) :: distance
         real(dp) :: n
         integer :: i
         n = real(size(cdf_at_sorted), dp)
         distance = 0.0_dp
+        !$omp parallel do schedule(static) default(shared) private(i) reduction(max: distance)
         do i = 1, size(cdf_at_sorted)
             distance = max(distance, real(i, dp)/n - cdf_at_sorted(i), &
                 cdf_at_sorted(i) - real(i - 1, dp)/n)
         end do
+        !$omp end parallel do
     end function ks_distance
 
     !> True for the rows whose last sphere ends at v0 ((1+e)/2)^3 wherever it
