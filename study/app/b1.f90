@@ -209,12 +209,26 @@ contains
     end subroutine critical_from_cycle
 
     !> Step 5, b1_critical.tsv: n against the distance to e_c with the fine
-    !> tolerance, and the power law fitted to it.
+    !> tolerance, and the power law fitted to it. The runs are independent:
+    !> they are made in parallel (OpenMP), the long ones closest to e_c first.
     subroutine write_critical()
         !> Rows of b1_critical.tsv: e - e_crit log-spaced over the decades below.
         integer, parameter :: n_delta = 25
         !> Largest and smallest e - e_crit of b1_critical.tsv, as powers of ten.
         real(qp), parameter :: delta_top_decade = -1.0_qp, delta_bottom_decade = -7.0_qp
+        type(run_t) :: runs(n_delta)
+        type(scene_t) :: mine
+        real(qp) :: e_base
+        e_base = e_c_sim
+        if (e_c > 0) e_base = e_c
+        !$omp parallel do schedule(dynamic, 1) default(shared) private(k, mine)
+        do k = n_delta, 1, -1
+            mine = scene
+            mine%e = e_base + 10.0_qp**(delta_top_decade + (delta_bottom_decade &
+                - delta_top_decade)*real(k - 1, qp)/real(n_delta - 1, qp))
+            call simulate(mine, runs(k))
+        end do
+        !$omp end parallel do
         call open_table(out, "b1_critical.tsv", "delta=e-e_crit"//tab//"e"//tab// &
             "collisions"//tab//"status"//tab//"collisions*sqrt(delta)", unit, stat, msg)
         call stop_unless_normal(stat, msg)
@@ -226,22 +240,18 @@ contains
         do k = 1, n_delta
             delta = 10.0_qp**(delta_top_decade + (delta_bottom_decade - delta_top_decade) &
                 *real(k - 1, qp)/real(n_delta - 1, qp))
-            if (e_c > 0) then
-                scene%e = e_c + delta
-            else
-                scene%e = e_c_sim + delta
-            end if
-            call simulate(scene, run)
-            write (unit, "(a)") str(delta)//tab//str(scene%e)//tab//itoa(run%n)//tab// &
-                status_word(run%status)//tab//str(run%n*sqrt(delta))
-            ! fit log n = intercept + slope log delta where the asymptote holds
-            if (run%status == status_normal .and. run%n >= min_fit_collisions) then
-                sx = sx + log(delta)
-                sy = sy + log(real(run%n, qp))
-                sxx = sxx + log(delta)**2
-                sxy = sxy + log(delta)*log(real(run%n, qp))
-                n_fit = n_fit + 1
-            end if
+            associate (r => runs(k))
+                write (unit, "(a)") str(delta)//tab//str(e_base + delta)//tab//itoa(r%n)//tab// &
+                    status_word(r%status)//tab//str(r%n*sqrt(delta))
+                ! fit log n = intercept + slope log delta where the asymptote holds
+                if (r%status == status_normal .and. r%n >= min_fit_collisions) then
+                    sx = sx + log(delta)
+                    sy = sy + log(real(r%n, qp))
+                    sxx = sxx + log(delta)**2
+                    sxy = sxy + log(delta)*log(real(r%n, qp))
+                    n_fit = n_fit + 1
+                end if
+            end associate
         end do
         close (unit)
         slope = 0
