@@ -3,7 +3,6 @@
 !> O(n) radix sort of the long arrays of doubles of the Monte Carlo.
 module sphere_row_sorting
     use, intrinsic :: iso_fortran_env, only: int64
-    !$ use omp_lib, only: omp_get_max_threads
     use sphere_row, only: dp, qp
     implicit none
     private
@@ -12,9 +11,10 @@ module sphere_row_sorting
     !> Bits per pass of the radix sort (256 buckets: the counts stay in cache).
     integer, parameter :: radix_bits = 8
     integer, parameter :: radix_buckets = 2**radix_bits, radix_passes = 64/radix_bits
-    !> Fewest keys per thread of the radix sort: shorter arrays are not worth a
-    !> thread's start.
-    integer, parameter :: min_part_size = 16384
+    !> Parts of the radix sort's first pass: at least min_part_size keys each
+    !> (fewer are not worth a thread's start), at most max_parts of them (more
+    !> than threads, so that a thread held up by other work holds up little).
+    integer, parameter :: min_part_size = 65536, max_parts = 16
 
 contains
 
@@ -50,31 +50,30 @@ contains
         end if
     end function median
 
-    !> Sort doubles into ascending order in O(n): a least-significant-digit
-    !> radix sort, stable, on 64-bit keys that order as the doubles do (see
-    !> order_key). The counts of all passes come from one read of the keys; a
-    !> pass whose digit is the same in every key (the exponent's top bits of
-    !> values in [0, 1], say) moves nothing and is left out. NaNs are not
-    !> ordered; -0 sorts before +0.
+    !> Sort doubles into ascending order in O(n): a radix sort on 64-bit keys
+    !> that order as the doubles do (see order_key). NaNs are not ordered; -0
+    !> sorts before +0. A digit that is the same in every key (the exponent's
+    !> top bits of values in [0, 1], say) is left out.
     !>
-    !> The keys are cut into one contiguous part per OpenMP thread: each part
-    !> is counted and scattered by its own thread, the parts of a digit's
-    !> bucket placed in part order, so every pass is the serial pass and the
-    !> result is the same for any number of threads. A part's counts of a
-    !> later pass are taken again after the keys moved (on one part they are
-    !> those of all keys, which do not change).
+    !> The keys are first distributed by their most significant digit that
+    !> differs among them, stably, into its buckets; each bucket is then
+    !> sorted on its own, least significant digit first (it is small enough
+    !> to stay in cache). With OpenMP the keys are cut into parts, each
+    !> counted and distributed by one thread (a bucket takes the parts in
+    !> order), and the buckets are shared among the threads: every step is
+    !> that of one thread, so the result is the same for any number of them,
+    !> and the threads meet only three times.
     subroutine radix_sort(x)
         real(dp), intent(inout) :: x(:)
-        integer(int64), allocatable :: key(:), tmp(:)
-        integer(int64), allocatable :: counts(:, :, :)
-        integer :: n, parts, part, i, pass
-        logical :: in_key, moved
+        integer(int64), allocatable :: key(:), tmp(:), counts(:, :, :), place(:, :)
+        integer(int64) :: starts(0:radix_buckets)
+        integer :: n, parts, part, i, top, d
         n = size(x)
         if (n < 2) return
-        parts = 1
-        !$ parts = max(1, min(omp_get_max_threads(), n/min_part_size))
+        parts = max(1, min(max_parts, n/min_part_size))
         allocate (key(n), tmp(n), counts(0:radix_buckets - 1, radix_passes, parts))
-        !$omp parallel do schedule(static, 1) default(shared) private(part, i) if (parts > 1)
+        allocate (place(0:radix_buckets - 1, parts))
+        !$omp parallel do schedule(dynamic, 1) default(shared) private(part, i) if (parts > 1)
         do part = 1, parts
             counts(:, :, part) = 0
             do i = part_first(n, parts, part), part_first(n, parts, part + 1) - 1
@@ -83,31 +82,98 @@ contains
             end do
         end do
         !$omp end parallel do
-        in_key = .true.
-        moved = .false.
-        do pass = 1, radix_passes
-            if (maxval(sum(counts(:, pass, :), dim=2)) == n) cycle
-            if (moved .and. parts > 1) then
-                if (in_key) then
-                    call count_pass(key, pass, parts, counts(:, pass, :))
-                else
-                    call count_pass(tmp, pass, parts, counts(:, pass, :))
-                end if
-            end if
-            if (in_key) then
-                call scatter_pass(key, tmp, pass, parts, counts(:, pass, :))
-            else
-                call scatter_pass(tmp, key, pass, parts, counts(:, pass, :))
-            end if
-            in_key = .not. in_key
-            moved = .true.
+        ! the most significant digit that differs among the keys (none: all equal)
+        top = radix_passes
+        do while (maxval(sum(counts(:, top, :), dim=2)) == n)
+            top = top - 1
+            if (top == 0) return
         end do
-        if (in_key) then
-            call keys_to_doubles(key, parts, x)
-        else
-            call keys_to_doubles(tmp, parts, x)
-        end if
+        call bucket_places(counts(:, top, :), place, starts)
+        !$omp parallel do schedule(dynamic, 1) default(shared) private(part, i, d) if (parts > 1)
+        do part = 1, parts
+            do i = part_first(n, parts, part), part_first(n, parts, part + 1) - 1
+                d = digit(key(i), top)
+                tmp(place(d, part)) = key(i)
+                place(d, part) = place(d, part) + 1
+            end do
+        end do
+        !$omp end parallel do
+        !$omp parallel do schedule(dynamic, 1) default(shared) private(d) if (parts > 1)
+        do d = 0, radix_buckets - 1
+            associate (lo => starts(d), hi => starts(d + 1) - 1)
+                if (hi >= lo) call lsd_sort(tmp(lo:hi), key(lo:hi), top - 1, x(lo:hi))
+            end associate
+        end do
+        !$omp end parallel do
     end subroutine radix_sort
+
+    !> Sort keys on their digits 1 ... passes (the higher ones being the same
+    !> in every key), least significant first, each pass stable; `work` is
+    !> as long as `keys`; x gets the doubles of the sorted keys.
+    subroutine lsd_sort(keys, work, passes, x)
+        integer(int64), intent(inout) :: keys(:), work(:)
+        integer, intent(in) :: passes
+        real(dp), intent(out) :: x(:)
+        integer(int64) :: counts(0:radix_buckets - 1, radix_passes), starts(0:radix_buckets)
+        integer(int64) :: place(0:radix_buckets - 1, 1)
+        integer :: i, pass, d
+        logical :: in_keys
+        counts = 0
+        do i = 1, size(keys)
+            call count_digits(keys(i), counts)
+        end do
+        in_keys = .true.
+        do pass = 1, passes
+            if (maxval(counts(:, pass)) == size(keys)) cycle
+            call bucket_places(counts(:, pass:pass), place, starts)
+            if (in_keys) then
+                call scatter(keys, work)
+            else
+                call scatter(work, keys)
+            end if
+            in_keys = .not. in_keys
+        end do
+        if (in_keys) then
+            x = from_key(keys)
+        else
+            x = from_key(work)
+        end if
+
+    contains
+
+        !> One stable pass: each key to the next place of its digit's bucket.
+        subroutine scatter(from, to)
+            integer(int64), intent(in) :: from(:)
+            integer(int64), intent(out) :: to(:)
+            integer :: j, dj
+            do j = 1, size(from)
+                dj = digit(from(j), pass)
+                to(place(dj, 1)) = from(j)
+                place(dj, 1) = place(dj, 1) + 1
+            end do
+        end subroutine scatter
+
+    end subroutine lsd_sort
+
+    !> Where each part's keys of each digit go: counts(d, part) keys of digit
+    !> d in part `part`; the buckets in the order of their digits, each
+    !> holding its parts in order. `starts(d)` is where bucket d begins
+    !> (starts(radix_buckets) is one past the end).
+    pure subroutine bucket_places(counts, place, starts)
+        integer(int64), intent(in) :: counts(0:, :)
+        integer(int64), intent(out) :: place(0:, :), starts(0:)
+        integer(int64) :: next
+        integer :: d, part
+        next = 1
+        do d = 0, radix_buckets - 1
+            starts(d) = next
+            do part = 1, size(counts, 2)
+                place(d, part) = next
+                next = next + counts(d, part)
+            end do
+        end do
+        starts(radix_buckets) = next
+    end subroutine bucket_places
 
     !> A key whose bits, compared as an unsigned number, order as the double
     !> x does: a double's bits order like its value for x >= 0 once the sign
@@ -135,19 +201,6 @@ contains
         x = transfer(k, x)
     end function from_key
 
-    !> The doubles of sorted keys, on `parts` threads.
-    subroutine keys_to_doubles(keys, parts, x)
-        integer(int64), intent(in) :: keys(:)
-        integer, intent(in) :: parts
-        real(dp), intent(out) :: x(:)
-        integer :: i
-        !$omp parallel do schedule(static) default(shared) private(i) if (parts > 1)
-        do i = 1, size(x)
-            x(i) = from_key(keys(i))
-        end do
-        !$omp end parallel do
-    end subroutine keys_to_doubles
-
     !> The digit of pass `pass` (the least significant first) of a key.
     elemental integer function digit(key, pass)
         integer(int64), intent(in) :: key
@@ -172,53 +225,5 @@ contains
         integer, intent(in) :: n, parts, part
         part_first = int((int(part - 1, int64)*n)/parts) + 1
     end function part_first
-
-    !> The counts of the digits of pass `pass` in each part of `keys`.
-    subroutine count_pass(keys, pass, parts, counts)
-        integer(int64), intent(in) :: keys(:)
-        integer, intent(in) :: pass, parts
-        integer(int64), intent(out) :: counts(0:, :)
-        integer :: n, part, i, d
-        n = size(keys)
-        !$omp parallel do schedule(static, 1) default(shared) private(part, i, d)
-        do part = 1, parts
-            counts(:, part) = 0
-            do i = part_first(n, parts, part), part_first(n, parts, part + 1) - 1
-                d = digit(keys(i), pass)
-                counts(d, part) = counts(d, part) + 1
-            end do
-        end do
-        !$omp end parallel do
-    end subroutine count_pass
-
-    !> One stable pass: each key of `from` to the next place of its digit's
-    !> bucket in `to`; within a bucket the parts come in order, each from the
-    !> place where the parts before it end. `counts` is used up.
-    subroutine scatter_pass(from, to, pass, parts, counts)
-        integer(int64), intent(in) :: from(:)
-        integer(int64), intent(inout) :: to(:)
-        integer, intent(in) :: pass, parts
-        integer(int64), intent(inout) :: counts(0:, :)
-        integer(int64) :: place, c
-        integer :: n, part, i, d
-        n = size(from)
-        place = 1
-        do d = 0, radix_buckets - 1
-            do part = 1, parts
-                c = counts(d, part)
-                counts(d, part) = place
-                place = place + c
-            end do
-        end do
-        !$omp parallel do schedule(static, 1) default(shared) private(part, i, d) if (parts > 1)
-        do part = 1, parts
-            do i = part_first(n, parts, part), part_first(n, parts, part + 1) - 1
-                d = digit(from(i), pass)
-                to(counts(d, part)) = from(i)
-                counts(d, part) = counts(d, part) + 1
-            end do
-        end do
-        !$omp end parallel do
-    end subroutine scatter_pass
 
 end module sphere_row_sorting
