@@ -464,12 +464,13 @@ contains
     !> sum d^2 - (sum d)^2/n to a factor of about 20; so mean and sd are good to
     !> about 1e-11 of sd, six orders below their own standard errors.
     !>
-    !> The chunks are summed on the OpenMP threads and their sums added in
-    !> chunk order: the same bits for any number of threads.
+    !> The chunks of a long sample are summed on the OpenMP threads and their
+    !> sums added in chunk order: the same bits for any number of threads.
     subroutine sample_moments(x, mean, sd)
         real(dp), intent(in) :: x(:)
         real(dp), intent(out) :: mean, sd
-        integer, parameter :: chunk = 4096
+        !> Values per chunk, and the fewest chunks worth sharing among threads.
+        integer, parameter :: chunk = 4096, shared_chunks = 64
         real(dp), allocatable :: c1(:), c2(:)
         real(dp) :: shift, s1, s2
         integer :: j, n, chunks
@@ -480,7 +481,8 @@ contains
         shift = x(1)
         chunks = (n - 1)/chunk + 1
         allocate (c1(chunks), c2(chunks))
-        !$omp parallel do schedule(static) default(shared) private(j) if (chunks > 1)
+        !$omp parallel do schedule(static) default(shared) private(j) &
+        !$omp if (chunks >= shared_chunks)
         do j = 1, chunks
             call shifted_sums(x((j - 1)*chunk + 1:min(n, j*chunk)), shift, c1(j), c2(j))
         end do
