@@ -9,9 +9,9 @@ module sphere_row_c2_tables
         status_normal
     use sphere_row_monte_carlo, only: mc_counts_t, normal_mass_outside_unit, normal_cdf, &
         normal_density, sample_moments, normal_quantile, mean_ci_half_width, sort_values, &
-        sorted_quantile, ks_distance, cubic_law_applies, cubic_law_mean, cubic_law_sd, &
+        sorted_quantile, cubic_law_applies, cubic_law_mean, cubic_law_sd, &
         cubic_law_quantile, cubic_law_cdf, cubic_law_density, cubic_law_v4, single_impact_bound, &
-        cubic_law_cdf_all
+        cubic_law_ks_distance
     use sphere_row_tables, only: tab, row_t
     use sphere_row_error, only: error_t, fatal_error, error_io
     implicit none
@@ -69,7 +69,6 @@ contains
         type(c2_sample_t), intent(inout) :: c
         type(scene_t), intent(in) :: scene
         type(error_t), allocatable, intent(out) :: error
-        real(dp), allocatable :: cdf(:)
         allocate (c%work(c%nmax))
         call sample_moments(c%v4(:c%n), c%v_mean, c%v_sd)
         call sample_moments(c%e(:c%n), c%e_mean, c%e_sd)
@@ -80,11 +79,7 @@ contains
         c%q975 = sorted_quantile(c%work(:c%n), 0.975_dp)
         c%exact = cubic_law_applies(scene)
         c%ks = -1.0_dp
-        if (c%exact) then
-            allocate (cdf(c%n))
-            call cubic_law_cdf_all(c%work(:c%n), c%mean, c%sd, c%v0, cdf)
-            c%ks = ks_distance(cdf)
-        end if
+        if (c%exact) c%ks = cubic_law_ks_distance(c%work(:c%n), c%mean, c%sd, c%v0)
         c%redraws_expected = c%n*real(normal_mass_outside_unit(c%mean, c%sd), qp) &
             /(1.0_qp - real(normal_mass_outside_unit(c%mean, c%sd), qp))
         if (c%exact) call c2_check_closed_form(c, scene, error)

@@ -35,7 +35,7 @@ module sphere_row_monte_carlo
     public :: ks_distance
     public :: cubic_law_applies, cubic_law_mean, cubic_law_sd, cubic_law_quantile
     public :: cubic_law_cdf, cubic_law_density, cubic_law_v4, single_impact_bound
-    public :: cubic_law_cdf_all
+    public :: cubic_law_ks_distance
 
     !> Smallest share of the normal law that must lie in [0, 1]: samples outside
     !> are drawn again, so a smaller share would multiply the cost (by up to
@@ -568,11 +568,18 @@ contains
         distance = 0.0_dp
         !$omp parallel do schedule(static) default(shared) private(i) reduction(max: distance)
         do i = 1, size(cdf_at_sorted)
-            distance = max(distance, real(i, dp)/n - cdf_at_sorted(i), &
-                cdf_at_sorted(i) - real(i - 1, dp)/n)
+            distance = max(distance, ks_gap(i, n, cdf_at_sorted(i)))
         end do
         !$omp end parallel do
     end function ks_distance
+
+    !> |F_n - F| on either side of the jump of F_n at the i-th of n order
+    !> statistics, where F is f: the larger of i/n - f and f - (i-1)/n.
+    elemental real(dp) function ks_gap(i, n, f)
+        integer, intent(in) :: i
+        real(dp), intent(in) :: n, f
+        ks_gap = max(real(i, dp)/n - f, f - real(i - 1, dp)/n)
+    end function ks_gap
 
     !> True for the rows whose last sphere ends at v0 ((1+e)/2)^3 wherever it
     !> is struck only once: the definition's four equal spheres at equal,
@@ -636,24 +643,29 @@ contains
         p = gsl_cdf_ugaussian_p(standard_score(v, m, s, v0))
     end function cubic_law_cdf
 
-    !> cubic_law_cdf at every value of v, into p (of the same size): the law's
-    !> parameters converted to double once, the values shared among threads
-    !> (each p(i) is the same for any number of them).
-    subroutine cubic_law_cdf_all(v, m, s, v0, p)
-        real(dp), intent(in) :: v(:)
+    !> ks_distance of a sorted sample to the law of v0 ((1+e)/2)^3, e ~ N(m,
+    !> s^2), whose distribution function (cubic_law_cdf) is taken at each
+    !> value as it is needed: the law's parameters converted to double once,
+    !> the values shared among threads (a maximum, the same for any number of
+    !> them).
+    function cubic_law_ks_distance(sorted, m, s, v0) result(distance)
+        real(dp), intent(in) :: sorted(:)
         real(qp), intent(in) :: m, s, v0
-        real(dp), intent(out) :: p(:)
-        real(dp) :: m_d, s_d, v0_d
+        real(dp) :: distance
+        real(dp) :: m_d, s_d, v0_d, n
         integer :: i
         m_d = real(m, dp)
         s_d = real(s, dp)
         v0_d = real(v0, dp)
-        !$omp parallel do schedule(static) default(shared) private(i)
-        do i = 1, size(v)
-            p(i) = gsl_cdf_ugaussian_p(score(v(i), m_d, s_d, v0_d))
+        n = real(size(sorted), dp)
+        distance = 0.0_dp
+        !$omp parallel do schedule(static) default(shared) private(i) reduction(max: distance)
+        do i = 1, size(sorted)
+            distance = max(distance, ks_gap(i, n, &
+                gsl_cdf_ugaussian_p(score(sorted(i), m_d, s_d, v0_d))))
         end do
         !$omp end parallel do
-    end subroutine cubic_law_cdf_all
+    end function cubic_law_ks_distance
 
     !> Density of v0 ((1+e)/2)^3, e ~ N(m, s^2): phi(z) dz/dv with
     !> z = (2 (v/v0)^(1/3) - 1 - m)/s, dz/dv = 2 (v/v0)^(-2/3) / (3 s v0).

@@ -55,30 +55,30 @@ contains
     !> sorts before +0. A digit that is the same in every key (the exponent's
     !> top bits of values in [0, 1], say) is left out.
     !>
-    !> The keys are first distributed by their most significant digit that
-    !> differs among them, stably, into its buckets; each bucket is then
-    !> sorted on its own, least significant digit first (it is small enough
-    !> to stay in cache). With OpenMP the keys are cut into parts, each
-    !> counted and distributed by one thread (a bucket takes the parts in
-    !> order), and the buckets are shared among the threads: every step is
-    !> that of one thread, so the result is the same for any number of them,
-    !> and the threads meet only three times.
+    !> The values are first distributed by the most significant digit of
+    !> their keys that differs among them, stably, into its buckets; each
+    !> bucket is then sorted on its own, least significant digit first (it is
+    !> small enough to stay in cache). With OpenMP the values are cut into
+    !> parts, each counted and distributed by one thread (a bucket takes the
+    !> parts in order), and the buckets are shared among the threads: every
+    !> step is that of one thread, so the result is the same for any number of
+    !> them, and the threads meet only three times.
     subroutine radix_sort(x)
         real(dp), intent(inout) :: x(:)
-        integer(int64), allocatable :: key(:), tmp(:), counts(:, :, :), place(:, :)
+        real(dp), allocatable :: tmp(:)
+        integer(int64), allocatable :: counts(:, :, :), place(:, :)
         integer(int64) :: starts(0:radix_buckets)
         integer :: n, parts, part, i, top, d
         n = size(x)
         if (n < 2) return
         parts = max(1, min(max_parts, n/min_part_size))
-        allocate (key(n), tmp(n), counts(0:radix_buckets - 1, radix_passes, parts))
+        allocate (tmp(n), counts(0:radix_buckets - 1, radix_passes, parts))
         allocate (place(0:radix_buckets - 1, parts))
         !$omp parallel do schedule(dynamic, 1) default(shared) private(part, i) if (parts > 1)
         do part = 1, parts
             counts(:, :, part) = 0
             do i = part_first(n, parts, part), part_first(n, parts, part + 1) - 1
-                key(i) = order_key(x(i))
-                call count_digits(key(i), counts(:, :, part))
+                call count_digits(order_key(x(i)), counts(:, :, part))
             end do
         end do
         !$omp end parallel do
@@ -92,8 +92,8 @@ contains
         !$omp parallel do schedule(dynamic, 1) default(shared) private(part, i, d) if (parts > 1)
         do part = 1, parts
             do i = part_first(n, parts, part), part_first(n, parts, part + 1) - 1
-                d = digit(key(i), top)
-                tmp(place(d, part)) = key(i)
+                d = digit(order_key(x(i)), top)
+                tmp(place(d, part)) = x(i)
                 place(d, part) = place(d, part) + 1
             end do
         end do
@@ -101,53 +101,49 @@ contains
         !$omp parallel do schedule(dynamic, 1) default(shared) private(d) if (parts > 1)
         do d = 0, radix_buckets - 1
             associate (lo => starts(d), hi => starts(d + 1) - 1)
-                if (hi >= lo) call lsd_sort(tmp(lo:hi), key(lo:hi), top - 1, x(lo:hi))
+                if (hi >= lo) call lsd_sort(tmp(lo:hi), x(lo:hi), top - 1)
             end associate
         end do
         !$omp end parallel do
     end subroutine radix_sort
 
-    !> Sort keys on their digits 1 ... passes (the higher ones being the same
-    !> in every key), least significant first, each pass stable; `work` is
-    !> as long as `keys`; x gets the doubles of the sorted keys.
-    subroutine lsd_sort(keys, work, passes, x)
-        integer(int64), intent(inout) :: keys(:), work(:)
+    !> Sort x on the digits 1 ... passes of its keys (the higher ones being
+    !> the same in every key) into `sorted`, least significant digit first,
+    !> each pass stable; x is the work space.
+    subroutine lsd_sort(x, sorted, passes)
+        real(dp), intent(inout) :: x(:)
+        real(dp), intent(out) :: sorted(:)
         integer, intent(in) :: passes
-        real(dp), intent(out) :: x(:)
         integer(int64) :: counts(0:radix_buckets - 1, radix_passes), starts(0:radix_buckets)
         integer(int64) :: place(0:radix_buckets - 1, 1)
-        integer :: i, pass, d
-        logical :: in_keys
+        integer :: i, pass
+        logical :: in_x
         counts = 0
-        do i = 1, size(keys)
-            call count_digits(keys(i), counts)
+        do i = 1, size(x)
+            call count_digits(order_key(x(i)), counts)
         end do
-        in_keys = .true.
+        in_x = .true.
         do pass = 1, passes
-            if (maxval(counts(:, pass)) == size(keys)) cycle
+            if (maxval(counts(:, pass)) == size(x)) cycle
             call bucket_places(counts(:, pass:pass), place, starts)
-            if (in_keys) then
-                call scatter(keys, work)
+            if (in_x) then
+                call scatter(x, sorted)
             else
-                call scatter(work, keys)
+                call scatter(sorted, x)
             end if
-            in_keys = .not. in_keys
+            in_x = .not. in_x
         end do
-        if (in_keys) then
-            x = from_key(keys)
-        else
-            x = from_key(work)
-        end if
+        if (in_x) sorted = x
 
     contains
 
-        !> One stable pass: each key to the next place of its digit's bucket.
+        !> One stable pass: each value to the next place of its digit's bucket.
         subroutine scatter(from, to)
-            integer(int64), intent(in) :: from(:)
-            integer(int64), intent(out) :: to(:)
+            real(dp), intent(in) :: from(:)
+            real(dp), intent(out) :: to(:)
             integer :: j, dj
             do j = 1, size(from)
-                dj = digit(from(j), pass)
+                dj = digit(order_key(from(j)), pass)
                 to(place(dj, 1)) = from(j)
                 place(dj, 1) = place(dj, 1) + 1
             end do
@@ -188,18 +184,6 @@ contains
             k = ibset(k, 63)
         end if
     end function order_key
-
-    !> The double of an order key (the inverse of order_key).
-    elemental real(dp) function from_key(key) result(x)
-        integer(int64), intent(in) :: key
-        integer(int64) :: k
-        if (btest(key, 63)) then
-            k = ibclr(key, 63)
-        else
-            k = not(key)
-        end if
-        x = transfer(k, x)
-    end function from_key
 
     !> The digit of pass `pass` (the least significant first) of a key.
     elemental integer function digit(key, pass)

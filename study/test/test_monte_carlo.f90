@@ -9,7 +9,7 @@ module test_monte_carlo
         normal_mass_outside_unit, normal_cdf, normal_density, sample_moments, &
         normal_quantile, mean_ci_half_width, sort_values, sorted_quantile, ks_distance, &
         cubic_law_applies, cubic_law_mean, cubic_law_sd, cubic_law_quantile, cubic_law_cdf, &
-        cubic_law_density, cubic_law_v4, single_impact_bound
+        cubic_law_density, cubic_law_v4, single_impact_bound, cubic_law_ks_distance
     use sphere_row_sorting, only: radix_sort, sort
     use testsuite, only: error_t, unittest_t, new_unittest, check
     !$ use omp_lib, only: omp_set_num_threads, omp_get_max_threads
@@ -38,6 +38,7 @@ contains
             new_unittest("box_muller_unseeded_nan", test_unseeded), &
             new_unittest("moments_quantiles_known_sample", test_known_sample), &
             new_unittest("ks_distance_known", test_ks_known), &
+            new_unittest("cubic_law_ks_distance", test_cubic_ks), &
             new_unittest("ci_half_width", test_ci_half_width), &
             new_unittest("normal_tails", test_normal_tails), &
             new_unittest("cubic_law_moments_by_quadrature", test_cubic_law_moments), &
@@ -424,6 +425,21 @@ contains
         call radix_sort(x)
         call check(error, all(x == 0.5_dp), "equal values changed")
     end subroutine test_radix_sort
+
+    !> The KS distance to the cubic law taken in one pass equals ks_distance
+    !> of cubic_law_cdf at the sorted sample, bit for bit (3 10^4 values, on
+    !> as many threads as OpenMP gives).
+    subroutine test_cubic_ks(error)
+        type(error_t), allocatable, intent(out) :: error
+        integer, parameter :: n = 30000
+        real(dp) :: v(n)
+        integer :: i
+        do i = 1, n
+            v(i) = real(cubic_law_v4(m_def + s_def*(real(i, qp)/n - 0.47_qp)*5, 1.0_qp), dp)
+        end do
+        call check(error, cubic_law_ks_distance(v, m_def, s_def, 1.0_qp) == &
+            ks_distance(cubic_law_cdf(v, m_def, s_def, 1.0_qp)), "the two distances differ")
+    end subroutine test_cubic_ks
 
     !> 10^5 doubles of both signs and many magnitudes, with zeros of both
     !> signs and runs of equal values, sorted on one, two and three threads
