@@ -171,18 +171,11 @@ contains
         c%checks = c%n/stride
     end subroutine check_stored_v4
 
-    !> The first m samples of v4 sorted into `c%work` (copied on the OpenMP
-    !> threads, each the part it then sorts).
+    !> The first m samples of v4 sorted into `c%work`.
     subroutine sort_prefix(c, m)
         type(c2_sample_t), intent(inout) :: c
         integer, intent(in) :: m
-        integer :: i
-        !$omp parallel do schedule(static) default(shared) private(i)
-        do i = 1, m
-            c%work(i) = c%v4(i)
-        end do
-        !$omp end parallel do
-        call sort_values(c%work(:m))
+        call sort_values(c%work(:m), c%v4(:m))
     end subroutine sort_prefix
 
     !> How many of the doubles x lie below the real(16) number b, compared in

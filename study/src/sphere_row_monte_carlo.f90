@@ -536,11 +536,13 @@ contains
         half_width = normal_quantile(0.5_qp + confidence/2)*sd/sqrt(real(n, qp))
     end function mean_ci_half_width
 
-    !> Sort into ascending order in place: a radix sort, O(n) (10^7 values in
-    !> a fraction of a second where a heapsort takes seconds).
-    subroutine sort_values(x)
+    !> Sort into ascending order in place, or into x the values of `source`:
+    !> a radix sort, O(n) (10^7 values in a fraction of a second where a
+    !> heapsort takes seconds).
+    subroutine sort_values(x, source)
         real(dp), contiguous, intent(inout) :: x(:)
-        call radix_sort(x)
+        real(dp), intent(in), optional :: source(:)
+        call radix_sort(x, source)
     end subroutine sort_values
 
     !> Quantile of level f (0 <= f <= 1) of sorted data, GSL's definition:

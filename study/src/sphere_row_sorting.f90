@@ -50,7 +50,8 @@ contains
         end if
     end function median
 
-    !> Sort doubles into ascending order in O(n): a radix sort on 64-bit keys
+    !> Sort doubles into ascending order in O(n): x, or into x the values of
+    !> `source` (as many), which stays as it is. A radix sort on 64-bit keys
     !> that order as the doubles do (see order_key). NaNs are not ordered; -0
     !> sorts before +0. A digit that is the same in every key (the exponent's
     !> top bits of values in [0, 1], say) is left out.
@@ -63,41 +64,39 @@ contains
     !> parts in order), and the buckets are shared among the threads: every
     !> step is that of one thread, so the result is the same for any number of
     !> them, and the threads meet only three times.
-    subroutine radix_sort(x)
+    subroutine radix_sort(x, source)
         real(dp), intent(inout) :: x(:)
+        real(dp), intent(in), optional :: source(:)
         real(dp), allocatable :: tmp(:)
         integer(int64), allocatable :: counts(:, :, :), place(:, :)
         integer(int64) :: starts(0:radix_buckets)
-        integer :: n, parts, part, i, top, d
+        integer :: n, parts, top, d
         n = size(x)
-        if (n < 2) return
         parts = max(1, min(max_parts, n/min_part_size))
         allocate (tmp(n), counts(0:radix_buckets - 1, radix_passes, parts))
         allocate (place(0:radix_buckets - 1, parts))
-        !$omp parallel do schedule(dynamic, 1) default(shared) private(part, i) if (parts > 1)
-        do part = 1, parts
-            counts(:, :, part) = 0
-            do i = part_first(n, parts, part), part_first(n, parts, part + 1) - 1
-                call count_digits(order_key(x(i)), counts(:, :, part))
-            end do
-        end do
-        !$omp end parallel do
-        ! the most significant digit that differs among the keys (none: all equal)
+        if (present(source)) then
+            call count_parts(source)
+        else
+            call count_parts(x)
+        end if
+        ! the most significant digit that differs among the keys (none: all
+        ! equal, or fewer than two)
         top = radix_passes
         do while (maxval(sum(counts(:, top, :), dim=2)) == n)
             top = top - 1
-            if (top == 0) return
+            if (top == 0) exit
         end do
+        if (top == 0) then
+            if (present(source)) x = source
+            return
+        end if
         call bucket_places(counts(:, top, :), place, starts)
-        !$omp parallel do schedule(dynamic, 1) default(shared) private(part, i, d) if (parts > 1)
-        do part = 1, parts
-            do i = part_first(n, parts, part), part_first(n, parts, part + 1) - 1
-                d = digit(order_key(x(i)), top)
-                tmp(place(d, part)) = x(i)
-                place(d, part) = place(d, part) + 1
-            end do
-        end do
-        !$omp end parallel do
+        if (present(source)) then
+            call distribute(source)
+        else
+            call distribute(x)
+        end if
         !$omp parallel do schedule(dynamic, 1) default(shared) private(d) if (parts > 1)
         do d = 0, radix_buckets - 1
             associate (lo => starts(d), hi => starts(d + 1) - 1)
@@ -105,6 +104,41 @@ contains
             end associate
         end do
         !$omp end parallel do
+
+    contains
+
+        !> The counts of every digit of the keys in each part of `from`.
+        subroutine count_parts(from)
+            real(dp), intent(in) :: from(:)
+            integer :: part, i
+            !$omp parallel do schedule(dynamic, 1) default(shared) private(part, i) &
+            !$omp if (parts > 1)
+            do part = 1, parts
+                counts(:, :, part) = 0
+                do i = part_first(n, parts, part), part_first(n, parts, part + 1) - 1
+                    call count_digits(order_key(from(i)), counts(:, :, part))
+                end do
+            end do
+            !$omp end parallel do
+        end subroutine count_parts
+
+        !> The values of `from` into tmp, each to the next place of the bucket
+        !> of its key's top digit.
+        subroutine distribute(from)
+            real(dp), intent(in) :: from(:)
+            integer :: part, i, dj
+            !$omp parallel do schedule(dynamic, 1) default(shared) private(part, i, dj) &
+            !$omp if (parts > 1)
+            do part = 1, parts
+                do i = part_first(n, parts, part), part_first(n, parts, part + 1) - 1
+                    dj = digit(order_key(from(i)), top)
+                    tmp(place(dj, part)) = from(i)
+                    place(dj, part) = place(dj, part) + 1
+                end do
+            end do
+            !$omp end parallel do
+        end subroutine distribute
+
     end subroutine radix_sort
 
     !> Sort x on the digits 1 ... passes of its keys (the higher ones being

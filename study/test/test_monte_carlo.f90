@@ -441,14 +441,14 @@ contains
             ks_distance(cubic_law_cdf(v, m_def, s_def, 1.0_qp)), "the two distances differ")
     end subroutine test_cubic_ks
 
-    !> 10^5 doubles of both signs and many magnitudes, with zeros of both
+    !> 2 10^5 doubles of both signs and many magnitudes, with zeros of both
     !> signs and runs of equal values, sorted on one, two and three threads
-    !> (where built with OpenMP; three parts or more, one per thread): the
-    !> same bits each time, in ascending order, -0 before +0.
+    !> (where built with OpenMP; on three, from a source array into another):
+    !> the same bits each time, in ascending order, -0 before +0.
     subroutine test_radix_sort_threads(error)
         type(error_t), allocatable, intent(out) :: error
-        integer, parameter :: n = 100000
-        real(dp), allocatable :: x(:, :)
+        integer, parameter :: n = 200000
+        real(dp), allocatable :: x(:, :), unsorted(:), x_in(:)
         integer :: i, threads, t
         allocate (x(n, 3))
         do i = 1, n
@@ -456,16 +456,22 @@ contains
         end do
         x(1000:1999, 1) = -0.0_dp
         x(2000:2999, 1) = 0.0_dp
-        x(50000:60000:7, 1) = 0.375_dp
+        x(50000:90000:7, 1) = 0.375_dp
         x(:, 2) = x(:, 1)
-        x(:, 3) = x(:, 1)
+        x(:, 3) = 0.0_dp
+        unsorted = x(:, 1)
+        x_in = x(:, 1)
         threads = 1
         !$ threads = omp_get_max_threads()
         do t = 1, 3
             !$ call omp_set_num_threads(t)
-            call radix_sort(x(:, t))
+            if (t < 3) call radix_sort(x(:, t))
+            ! the third from a source left as it is
+            if (t == 3) call radix_sort(x(:, t), source=unsorted)
         end do
         !$ call omp_set_num_threads(threads)
+        call check(error, all(transfer(unsorted, 1_int64, n) == transfer(x_in, 1_int64, n)), &
+            "the source changed")
         call check(error, all(transfer(x(:, 2), 1_int64, n) == transfer(x(:, 1), 1_int64, n)) &
             .and. all(transfer(x(:, 3), 1_int64, n) == transfer(x(:, 1), 1_int64, n)), &
             "the sorted bits depend on the number of threads")
