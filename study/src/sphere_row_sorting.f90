@@ -58,12 +58,12 @@ contains
     !>
     !> The values are first distributed by the most significant digit of
     !> their keys that differs among them, stably, into its buckets; each
-    !> bucket is then sorted on its own, least significant digit first (it is
-    !> small enough to stay in cache). With OpenMP the values are cut into
-    !> parts, each counted and distributed by one thread (a bucket takes the
-    !> parts in order), and the buckets are shared among the threads: every
-    !> step is that of one thread, so the result is the same for any number of
-    !> them, and the threads meet only three times.
+    !> bucket is then sorted on its own, least significant digit first (a
+    !> fraction of the values, nearer the cache). With OpenMP the values are
+    !> cut into parts, each counted and distributed by one thread (a bucket
+    !> takes the parts in order), and the buckets are shared among the
+    !> threads: every step is that of one thread, so the result is the same
+    !> for any number of them, and the threads meet only three times.
     subroutine radix_sort(x, source)
         real(dp), intent(inout) :: x(:)
         real(dp), intent(in), optional :: source(:)
