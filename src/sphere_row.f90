@@ -9,8 +9,10 @@
 module sphere_row
     use sphere_row_kinds, only: sp, dp, xdp, qp
     use sphere_row_status, only: status_normal, status_collapsed, status_max_collisions, &
-        status_invalid, event_start, event_collision, event_collapse, status_word
-    use sphere_row_format, only: real_str, short_text, itoa
+        status_invalid, event_start, event_collision, event_collapse, status_word, status_text, &
+        status_word_length
+    use sphere_row_format, only: real_str, short_text, itoa, real_text, int_text, &
+        number_text_length
     use sphere_row_engine_qp, only: scene_t, run_t, &
         event_log_t, scene_init_qp => scene_init_wp, &
         scene_check_qp => scene_check_wp, simulate_qp => simulate_wp, &
@@ -44,6 +46,7 @@ module sphere_row
     public :: status_normal, status_collapsed, status_max_collisions, status_invalid
     public :: event_start, event_collision, event_collapse, status_word, real_str, &
         short_text, itoa
+    public :: status_text, status_word_length, real_text, int_text, number_text_length
     public :: scene_t, run_t, event_log_t
 #ifdef SPHERE_ROW_XDP
     public :: scene_xdp_t, run_xdp_t, event_log_xdp_t

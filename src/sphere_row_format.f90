@@ -6,7 +6,11 @@ module sphere_row_format
     use sphere_row_kinds, only: qp
     implicit none
     private
-    public :: real_str, short_text, itoa
+    public :: real_str, short_text, itoa, real_text, int_text, number_text_length
+
+    !> Length of the buffers of real_text (enough for up to 52 digits) and
+    !> int_text.
+    integer, parameter :: number_text_length = 64
 
     !> Text of an integer of either kind.
     interface itoa
@@ -26,13 +30,26 @@ contains
     pure function itoa_int64(i) result(s)
         integer(int64), intent(in) :: i
         character(len=:), allocatable :: s
+        character(len=number_text_length) :: buf
+        integer :: length
+        call int_text(i, buf, length)
+        s = buf(:length)
+    end function itoa_int64
+
+    !> itoa into `text`, its first `length` characters: a subroutine, as
+    !> real_text and for the same reason, so that threads may call it at once.
+    pure subroutine int_text(i, text, length)
+        integer(int64), intent(in) :: i
+        character(len=number_text_length), intent(out) :: text
+        integer, intent(out) :: length
         character(len=24) :: buf
         integer(int64) :: rest
         integer :: at
         ! digits from the right, without formatted I/O (it is called per
         ! line of long outputs); the most negative value has no positive twin
         if (i == -huge(i) - 1) then
-            s = "-9223372036854775808"
+            text = "-9223372036854775808"
+            length = 20
             return
         end if
         rest = abs(i)
@@ -47,8 +64,9 @@ contains
             at = at - 1
             buf(at:at) = "-"
         end if
-        s = buf(at:)
-    end function itoa_int64
+        text = buf(at:)
+        length = len(buf) - at + 1
+    end subroutine int_text
 
     !> `x` (converted exactly to real128) written with `digits` significant
     !> digits in scientific notation; the exponent gets as many places as it needs.
@@ -57,23 +75,42 @@ contains
         real(qp), intent(in) :: x
         integer, intent(in) :: digits
         character(len=:), allocatable :: str
-        character(len=64) :: buf, form
-        integer :: ew
-        if (x /= x) then
-            str = "nan"
-            return
-        else if (abs(x) > huge(x)) then
-            str = merge("inf ", "-inf", x > 0)
-            str = trim(str)
-            return
-        end if
-        ! two exponent digits unless |log10 |x|| >= 99
-        ew = 2
-        if (x /= 0.0_qp .and. (abs(x) >= 1.0e99_qp .or. abs(x) <= 1.0e-99_qp)) ew = 4
-        form = "(es"//itoa(digits + ew + 8)//"."//itoa(digits - 1)//"e"//itoa(ew)//")"
-        write (buf, form) x
-        str = trim(adjustl(buf))
+        character(len=number_text_length) :: buf
+        integer :: length
+        call real_text(x, digits, buf, length)
+        str = buf(:length)
     end function real_str
+
+    !> real_str into `text`, its first `length` characters. No character
+    !> result of deferred length: gfortran 12 keeps the length of such a
+    !> result in a static variable of the caller, so two threads that call one
+    !> at once may get each other's length; threads may call this subroutine
+    !> at once.
+    pure subroutine real_text(x, digits, text, length)
+        real(qp), intent(in) :: x
+        integer, intent(in) :: digits
+        character(len=number_text_length), intent(out) :: text
+        integer, intent(out) :: length
+        character(len=number_text_length) :: buf, form, w, d, e
+        integer :: ew, nw, nd, ne
+        if (x /= x) then
+            buf = "nan"
+        else if (abs(x) > huge(x)) then
+            buf = merge("inf ", "-inf", x > 0)
+        else
+            ! two exponent digits unless |log10 |x|| >= 99
+            ew = 2
+            if (x /= 0.0_qp .and. (abs(x) >= 1.0e99_qp .or. abs(x) <= 1.0e-99_qp)) ew = 4
+            call int_text(int(digits + ew + 8, int64), w, nw)
+            call int_text(int(digits - 1, int64), d, nd)
+            call int_text(int(ew, int64), e, ne)
+            form = "(es"//w(:nw)//"."//d(:nd)//"e"//e(:ne)//")"
+            write (buf, form) x
+            buf = adjustl(buf)
+        end if
+        length = len_trim(buf)
+        text = buf(:length)
+    end subroutine real_text
 
     !> The shortest text (at most `digits` significant digits, default as many
     !> as needed) that reads back as `x`: 0.2, 1, 1000000, 1.93e-34. A bound

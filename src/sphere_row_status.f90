@@ -8,7 +8,7 @@ module sphere_row_status
     public :: status_normal, status_collapsed, status_max_collisions, status_invalid
     public :: status_negative_gap, status_budget, status_solver_failed
     public :: event_start, event_collision, event_collapse
-    public :: status_word
+    public :: status_word, status_text, status_word_length
 
     !> The run ended by the definition's criterion: no gap is closing any more.
     integer, parameter :: status_normal = 0
@@ -31,6 +31,9 @@ module sphere_row_status
     !> The ODE solver (GSL) returned an error; the message says which.
     integer, parameter :: status_solver_failed = 6
 
+    !> Length of the buffer of status_text, enough for every status word.
+    integer, parameter :: status_word_length = 16
+
     !> Event kinds of the optional event record.
     integer, parameter :: event_start = 0, event_collision = 1, event_collapse = 2
 
@@ -40,23 +43,37 @@ contains
     pure function status_word(status) result(word)
         integer, intent(in) :: status
         character(len=:), allocatable :: word
+        character(len=status_word_length) :: text
+        integer :: length
+        call status_text(status, text, length)
+        word = text(:length)
+    end function status_word
+
+    !> status_word into `text`, its first `length` characters: no character
+    !> result of deferred length, whose length gfortran 12 keeps in a static
+    !> variable of the caller, so threads may call it at once.
+    pure subroutine status_text(status, text, length)
+        integer, intent(in) :: status
+        character(len=status_word_length), intent(out) :: text
+        integer, intent(out) :: length
         select case (status)
         case (status_normal)
-            word = "normal"
+            text = "normal"
         case (status_collapsed)
-            word = "quasi_plastic"
+            text = "quasi_plastic"
         case (status_max_collisions)
-            word = "max_collisions"
+            text = "max_collisions"
         case (status_invalid)
-            word = "invalid"
+            text = "invalid"
         case (status_negative_gap)
-            word = "negative_gap"
+            text = "negative_gap"
         case (status_budget)
-            word = "budget_exhausted"
+            text = "budget_exhausted"
         case (status_solver_failed)
-            word = "solver_failed"
+            text = "solver_failed"
         case default
-            word = "unknown"
+            text = "unknown"
         end select
-    end function status_word
+        length = len_trim(text)
+    end subroutine status_text
 end module sphere_row_status

@@ -4,7 +4,7 @@
 program c12_b1
     use sphere_row, only: qp, scene_t, run_t, event_log_t, simulate, str, status_word, &
         status_normal, status_collapsed, itoa, auto_t, simulate_auto
-    use sphere_row_tables, only: open_table, write_answer, answer_header, tab
+    use sphere_row_tables, only: open_table, write_answer, answer_header, tab, row_t
     use sphere_row_analysis, only: sequence_of, sequence_text, sequence_hash, tail_period, &
         critical_restitution
     use sphere_row_bisection, only: bisect, bisect_changes
@@ -27,12 +27,11 @@ program c12_b1
     integer, allocatable :: pairs(:), cycle(:)
     integer :: stat, unit, j, n_scan, n_bisect_max, n_boundaries, period, k
     integer :: n_intervals, n_fit, stat_c
-    real(qp) :: resolution, tol_fine, e_lo, e_hi, e_c, e_c_sim, closed, lo, hi, mid
+    real(qp) :: resolution, tol_fine, e_lo, e_hi, e_c, e_c_sim, closed, lo, hi
     real(qp) :: sx, sy, sxx, sxy, slope, intercept, e_quasi, delta
     real(qp), allocatable :: e_scan(:), boundaries(:)
     integer, allocatable :: n_scan_runs(:), status_scan(:)
     integer(8), allocatable :: class_scan(:)
-    integer(8) :: class_mid
     !> The keys precision = auto (scan and bisections) and critical = yes.
     logical :: auto_runs, with_critical
     !> A thread's own scene, run and log for the bisections of step 2.
@@ -45,7 +44,6 @@ program c12_b1
     call define_keys()
     call scan()
     call find_changes()
-    call write_scan()
     call write_intervals()
     if (with_critical) call critical_by_simulation()
     if (with_critical) call critical_from_cycle()
@@ -82,33 +80,46 @@ contains
         with_critical = cli%get_flag("critical")
     end subroutine define_keys
 
-    !> Step 1: a dense scan of e from 1 down to 0 with the scene's own tolerance.
+    !> Step 1: a dense scan of e from 1 down to 0 with the scene's own tolerance,
+    !> in parallel (OpenMP; the slow runs near e = 0 first), and b1_scan.tsv.
     subroutine scan()
         ! a thread's own scene, run and log
         type(scene_t) :: scan_scene
         type(run_t) :: scan_run
         type(event_log_t) :: scan_events
         integer, allocatable :: scan_pairs(:)
+        type(row_t), allocatable :: scan_rows(:)
         integer :: i
         allocate (e_scan(n_scan), n_scan_runs(n_scan), status_scan(n_scan), class_scan(n_scan))
-        ! the values are independent: they run in parallel (OpenMP)
+        allocate (scan_rows(n_scan))
+        call open_table(out, "b1_scan.tsv", "e"//tab//"collisions"//tab//"status"//tab// &
+            "sequence_hash", unit, stat, msg)
+        call stop_unless_normal(stat, msg)
         !$omp parallel do schedule(dynamic, 8) default(shared) &
         !$omp private(i, scan_scene, scan_run, scan_events, scan_pairs)
-        do i = 1, n_scan
+        do i = n_scan, 1, -1
             e_scan(i) = 1.0_qp - real(i - 1, qp)/real(n_scan - 1, qp)
             scan_scene = scene
             call classify_with(e_scan(i), scan_scene, scan_run, scan_events, scan_pairs, &
                 class_scan(i))
             n_scan_runs(i) = scan_run%n
             status_scan(i) = scan_run%status
+            call scan_rows(i)%add(e_scan(i))
+            call scan_rows(i)%add(n_scan_runs(i))
+            call scan_rows(i)%add_status(status_scan(i))
+            call scan_rows(i)%add(class_scan(i))
         end do
         !$omp end parallel do
+        do i = 1, n_scan
+            write (unit, "(a)") scan_rows(i)%text
+        end do
+        close (unit)
     end subroutine scan
 
     !> Step 2: every change of (n, sequence) between neighbours of the scan,
     !> bisected to `resolution`, in increasing order. The intervals are
-    !> independent: they are bisected in parallel (OpenMP), each thread on its
-    !> own scene and run, and their changes joined in the scan's order.
+    !> bisected in parallel (OpenMP), each thread on its own scene and run, the
+    !> slow ones of low e first, and their changes joined in the scan's order.
     subroutine find_changes()
         !> The changes found in one interval of the scan.
         type :: found_t
@@ -118,7 +129,7 @@ contains
         integer :: i
         allocate (found(n_scan - 1))
         !$omp parallel do schedule(dynamic, 1) default(shared) private(i)
-        do i = 1, n_scan - 1
+        do i = n_scan - 1, 1, -1
             allocate (found(i)%e(0))
             if (class_scan(i) == class_scan(i + 1)) cycle
             if (min(n_scan_runs(i), n_scan_runs(i + 1)) > n_bisect_max) cycle
@@ -198,12 +209,26 @@ contains
     end subroutine critical_from_cycle
 
     !> Step 5, b1_critical.tsv: n against the distance to e_c with the fine
-    !> tolerance, and the power law fitted to it.
+    !> tolerance, and the power law fitted to it. The runs are independent:
+    !> they are made in parallel (OpenMP), the long ones closest to e_c first.
     subroutine write_critical()
         !> Rows of b1_critical.tsv: e - e_crit log-spaced over the decades below.
         integer, parameter :: n_delta = 25
         !> Largest and smallest e - e_crit of b1_critical.tsv, as powers of ten.
         real(qp), parameter :: delta_top_decade = -1.0_qp, delta_bottom_decade = -7.0_qp
+        type(run_t) :: runs(n_delta)
+        type(scene_t) :: mine
+        real(qp) :: e_base
+        e_base = e_c_sim
+        if (e_c > 0) e_base = e_c
+        !$omp parallel do schedule(dynamic, 1) default(shared) private(k, mine)
+        do k = n_delta, 1, -1
+            mine = scene
+            mine%e = e_base + 10.0_qp**(delta_top_decade + (delta_bottom_decade &
+                - delta_top_decade)*real(k - 1, qp)/real(n_delta - 1, qp))
+            call simulate(mine, runs(k))
+        end do
+        !$omp end parallel do
         call open_table(out, "b1_critical.tsv", "delta=e-e_crit"//tab//"e"//tab// &
             "collisions"//tab//"status"//tab//"collisions*sqrt(delta)", unit, stat, msg)
         call stop_unless_normal(stat, msg)
@@ -215,22 +240,18 @@ contains
         do k = 1, n_delta
             delta = 10.0_qp**(delta_top_decade + (delta_bottom_decade - delta_top_decade) &
                 *real(k - 1, qp)/real(n_delta - 1, qp))
-            if (e_c > 0) then
-                scene%e = e_c + delta
-            else
-                scene%e = e_c_sim + delta
-            end if
-            call simulate(scene, run)
-            write (unit, "(a)") str(delta)//tab//str(scene%e)//tab//itoa(run%n)//tab// &
-                status_word(run%status)//tab//str(run%n*sqrt(delta))
-            ! fit log n = intercept + slope log delta where the asymptote holds
-            if (run%status == status_normal .and. run%n >= min_fit_collisions) then
-                sx = sx + log(delta)
-                sy = sy + log(real(run%n, qp))
-                sxx = sxx + log(delta)**2
-                sxy = sxy + log(delta)*log(real(run%n, qp))
-                n_fit = n_fit + 1
-            end if
+            associate (r => runs(k))
+                write (unit, "(a)") str(delta)//tab//str(e_base + delta)//tab//itoa(r%n)//tab// &
+                    status_word(r%status)//tab//str(r%n*sqrt(delta))
+                ! fit log n = intercept + slope log delta where the asymptote holds
+                if (r%status == status_normal .and. r%n >= min_fit_collisions) then
+                    sx = sx + log(delta)
+                    sy = sy + log(real(r%n, qp))
+                    sxx = sxx + log(delta)**2
+                    sxy = sxy + log(delta)*log(real(r%n, qp))
+                    n_fit = n_fit + 1
+                end if
+            end associate
         end do
         close (unit)
         slope = 0
@@ -297,61 +318,63 @@ contains
     end subroutine write_critical_answers
 
     !> b1_intervals.tsv: the intervals between consecutive changes, each with its
-    !> collision count and sequence; e_quasi is the top of the collapsed ones.
+    !> collision count and sequence (of the run at its middle, run in parallel);
+    !> e_quasi is the top of the collapsed ones.
     subroutine write_intervals()
-        integer(8) :: last_class
-        ! intervals between consecutive boundaries, each with its sequence
+        !> The run at the middle of an interval: its count, status, sequence, class.
+        type :: middle_t
+            integer :: n, status
+            integer, allocatable :: pairs(:)
+            integer(8) :: class
+        end type middle_t
+        type(middle_t), allocatable :: middles(:)
+        ! interval j from ends(j) to ends(j + 1), from 0 to the first change ...
+        real(qp), allocatable :: ends(:)
+        type(scene_t) :: mine
+        type(run_t) :: got
+        type(event_log_t) :: log
+        integer(8) :: class_at_1
         call open_table(out, "b1_intervals.tsv", "e_low"//tab//"e_high"//tab//"width"//tab// &
             "collisions"//tab//"status"//tab//"sequence", unit, stat, msg)
         call stop_unless_normal(stat, msg)
+        allocate (middles(0:n_boundaries), ends(0:n_boundaries + 1))
+        ends = [0.0_qp, boundaries, 1.0_qp]
+        !$omp parallel do schedule(dynamic, 1) default(shared) private(j, mine, got, log)
+        do j = n_boundaries, 0, -1
+            mine = scene
+            call classify_with(0.5_qp*(ends(j) + ends(j + 1)), mine, got, log, &
+                middles(j)%pairs, middles(j)%class)
+            middles(j)%n = got%n
+            middles(j)%status = got%status
+        end do
+        !$omp end parallel do
         n_intervals = 0
         e_quasi = -1.0_qp
         do j = 0, n_boundaries
-            if (j == 0) then
-                lo = 0.0_qp
-            else
-                lo = boundaries(j)
-            end if
-            if (j == n_boundaries) then
-                hi = 1.0_qp
-            else
-                hi = boundaries(j + 1)
-            end if
-            mid = 0.5_qp*(lo + hi)
-            call classify(mid, class_mid)
-            if (run%status == status_collapsed) then
-                e_quasi = max(e_quasi, hi)
-                write (unit, "(a)") str(lo)//tab//str(hi)//tab//str(hi - lo)//tab// &
-                    itoa(run%n)//tab//status_word(run%status)//tab//"-"
-            else
-                write (unit, "(a)") str(lo)//tab//str(hi)//tab//str(hi - lo)//tab// &
-                    itoa(run%n)//tab//status_word(run%status)//tab//sequence_text(pairs)
-            end if
+            lo = ends(j)
+            hi = ends(j + 1)
+            associate (m => middles(j))
+                if (m%status == status_collapsed) then
+                    e_quasi = max(e_quasi, hi)
+                    write (unit, "(a)") str(lo)//tab//str(hi)//tab//str(hi - lo)//tab// &
+                        itoa(m%n)//tab//status_word(m%status)//tab//"-"
+                else
+                    write (unit, "(a)") str(lo)//tab//str(hi)//tab//str(hi - lo)//tab// &
+                        itoa(m%n)//tab//status_word(m%status)//tab//sequence_text(m%pairs)
+                end if
+            end associate
             n_intervals = n_intervals + 1
         end do
         ! e = 1 itself is a point of its own (one collision per pair), apart
         ! from the interval just below it
-        last_class = class_mid
-        call classify(1.0_qp, class_mid)
-        if (class_mid /= last_class) then
+        call classify(1.0_qp, class_at_1)
+        if (class_at_1 /= middles(n_boundaries)%class) then
             write (unit, "(a)") str(1.0_qp)//tab//str(1.0_qp)//tab//str(0.0_qp)//tab// &
                 itoa(run%n)//tab//status_word(run%status)//tab//sequence_text(pairs)
             n_intervals = n_intervals + 1
         end if
         close (unit)
     end subroutine write_intervals
-
-    !> b1_scan.tsv: the scan of e, one row per value.
-    subroutine write_scan()
-        call open_table(out, "b1_scan.tsv", "e"//tab//"collisions"//tab//"status"//tab// &
-            "sequence_hash", unit, stat, msg)
-        call stop_unless_normal(stat, msg)
-        do j = 1, n_scan
-            write (unit, "(a)") str(e_scan(j))//tab//itoa(n_scan_runs(j))//tab// &
-                status_word(status_scan(j))//tab//itoa(class_scan(j))
-        end do
-        close (unit)
-    end subroutine write_scan
 
     !> Whether the run at e with the scene's tolerance collapses, for bisect.
     logical function collapses(e)

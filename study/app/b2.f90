@@ -2,9 +2,9 @@
 !> quasi-plastic regime, compared with their closed forms: on an interval of
 !> constant collision sequence every final velocity is a polynomial in e.
 program c12_b2
-    use sphere_row, only: qp, scene_t, run_t, event_log_t, simulate, str, status_word, &
+    use sphere_row, only: qp, scene_t, run_t, event_log_t, simulate, str, &
         status_normal, itoa, auto_t, simulate_auto
-    use sphere_row_tables, only: open_table, write_answer, answer_header, tab
+    use sphere_row_tables, only: open_table, write_answer, answer_header, tab, row_t
     use sphere_row_analysis, only: sequence_of, sequence_text, sequence_hash, &
         sequence_polynomials, poly_eval
     use sphere_row_study_cli, only: cli_t, add_scene_keys, start_program, read_keys, &
@@ -28,10 +28,12 @@ program c12_b2
         real(qp) :: v_bound = 0.0_qp, diff = 0.0_qp
         !> Sphere p hit once (see single_hit_of).
         logical :: single_hit = .false.
+        !> Its row of b2_velocities.tsv.
+        type(row_t) :: row
     end type point_t
     type(point_t), allocatable :: points(:)
     type(cli_t) :: cli
-    character(len=:), allocatable :: out, header, line
+    character(len=:), allocatable :: out, header
     character(len=300) :: msg
     logical :: equal, contiguous, auto_runs
     type(scene_t) :: scene
@@ -79,12 +81,9 @@ contains
 
     !> The grid of e from 1 down to 0: one row of final velocities per point,
     !> each finite run against the polynomials of its sequence and, where sphere
-    !> p is hit once, against the single-hit closed form. The points are
-    !> independent: they run and are compared in parallel (OpenMP), and the
-    !> rows are formatted, written and counted in order afterwards, so the
-    !> tables do not depend on the threads. (No row is formatted inside the
-    !> parallel loop: gfortran 12 mixes up the lengths of character function
-    !> results of deferred length made on two threads at once.)
+    !> p is hit once, against the single-hit closed form. The points run, are
+    !> compared and formatted in parallel (OpenMP); the rows are written and
+    !> counted in order, so the tables do not depend on the threads.
     subroutine tabulate()
         allocate (points(n_grid))
         call run_grid()
@@ -99,32 +98,20 @@ contains
         contiguous = .true.
         do j = 1, n_grid
             e = grid_e(j)
-            associate (pt => points(j))
-                line = str(e)//tab//itoa(pt%n)//tab//status_word(pt%status)
-                do i = 1, p
-                    line = line//tab//str(pt%v(i))
-                end do
-                if (pt%status == status_normal) then
-                    call count_closed_forms(pt)
-                    if (pt%single_hit) then
-                        line = line//tab//str(pt%diff)//tab//str(single_hit_v(e))
-                    else
-                        line = line//tab//str(pt%diff)//tab//"-"
-                    end if
-                else
-                    contiguous = .false.
-                    line = line//tab//"-"//tab//"-"
-                end if
-                write (unit, "(a)") line
-            end associate
+            if (points(j)%status == status_normal) then
+                call count_closed_forms(points(j))
+            else
+                contiguous = .false.
+            end if
+            write (unit, "(a)") points(j)%row%text
         end do
         close (unit)
         close (unit_forms)
     end subroutine tabulate
 
     !> Every point's run, in the precision it needs (precision = auto) or in
-    !> real(16), each thread on its own scene and run; then its comparison
-    !> with the closed forms.
+    !> real(16), each thread on its own scene and run, the slow ones near e = 0
+    !> first; then its comparison with the closed forms and its row.
     subroutine run_grid()
         type(scene_t) :: mine
         type(run_t) :: got
@@ -133,7 +120,7 @@ contains
         integer :: k
         !$omp parallel do schedule(dynamic, 8) default(shared) &
         !$omp private(k, mine, got, log, auto)
-        do k = 1, n_grid
+        do k = n_grid, 1, -1
             mine = scene
             mine%e = grid_e(k)
             associate (pt => points(k))
@@ -152,10 +139,36 @@ contains
                     pt%diff = polynomial_difference(pt, mine%e)
                     pt%single_hit = single_hit_of(pt%pairs)
                 end if
+                call format_row(pt, mine%e)
             end associate
         end do
         !$omp end parallel do
     end subroutine run_grid
+
+    !> The row of b2_velocities.tsv of the point at e_pt: e, count, status, final
+    !> velocities, difference from the polynomials and single-hit closed form.
+    subroutine format_row(pt, e_pt)
+        type(point_t), intent(inout) :: pt
+        real(qp), intent(in) :: e_pt
+        integer :: q
+        call pt%row%add(e_pt)
+        call pt%row%add(pt%n)
+        call pt%row%add_status(pt%status)
+        do q = 1, p
+            call pt%row%add(pt%v(q))
+        end do
+        if (pt%status /= status_normal) then
+            call pt%row%add("-")
+            call pt%row%add("-")
+        else
+            call pt%row%add(pt%diff)
+            if (pt%single_hit) then
+                call pt%row%add(single_hit_v(e_pt))
+            else
+                call pt%row%add("-")
+            end if
+        end if
+    end subroutine format_row
 
     !> The largest |v_i - P_i(e)| of a finite run at e, P_i the polynomials in
     !> e of its own collision sequence.

@@ -219,7 +219,7 @@ contains
             sweep_t("c12-b1.sweep", "c12-b1 critical=no", "the scan of e and the bisections " &
             //"of its changes"), &
             sweep_t("c12-b2", "c12-b2 n_grid=20001", "the grid of e, 20 times denser than " &
-            //"the task's; its rows are formatted on one thread"), &
+            //"the task's"), &
             sweep_t("c12-methods.stability_map", "c12-methods work_precision=no", "the " &
             //"stability map (the timed tables run one thing at a time by design)")]
         runs = "build/bench-runs"

@@ -9,10 +9,10 @@ module sphere_row_c2_tables
         status_normal
     use sphere_row_monte_carlo, only: mc_counts_t, normal_mass_outside_unit, normal_cdf, &
         normal_density, sample_moments, normal_quantile, mean_ci_half_width, sort_values, &
-        sorted_quantile, ks_distance, cubic_law_applies, cubic_law_mean, cubic_law_sd, &
+        sorted_quantile, cubic_law_applies, cubic_law_mean, cubic_law_sd, &
         cubic_law_quantile, cubic_law_cdf, cubic_law_density, cubic_law_v4, single_impact_bound, &
-        cubic_law_cdf_all
-    use sphere_row_tables, only: tab
+        cubic_law_ks_distance
+    use sphere_row_tables, only: tab, row_t
     use sphere_row_error, only: error_t, fatal_error, error_io
     implicit none
     private
@@ -20,6 +20,8 @@ module sphere_row_c2_tables
 
     !> Rows of the empirical distribution function table (every k-th order statistic).
     integer, parameter :: ecdf_rows = 1000
+    !> Significant digits of a double in the tables, enough to give back its bits.
+    integer, parameter :: dp_digits = 17
     !> Sampled e re-run to compare the engine with the closed form in real128,
     !> and stored v4 compared with the closed form rounded to a double.
     integer, parameter :: closed_form_reruns = 1000, closed_form_checks = 100000
@@ -67,23 +69,17 @@ contains
         type(c2_sample_t), intent(inout) :: c
         type(scene_t), intent(in) :: scene
         type(error_t), allocatable, intent(out) :: error
-        real(dp), allocatable :: cdf(:)
         allocate (c%work(c%nmax))
         call sample_moments(c%v4(:c%n), c%v_mean, c%v_sd)
         call sample_moments(c%e(:c%n), c%e_mean, c%e_sd)
         c%z975 = normal_quantile(0.5_qp + confidence/2)
         c%half_width = mean_ci_half_width(real(c%v_sd, qp), c%n, confidence)
-        c%work(:c%n) = c%v4(:c%n)
-        call sort_values(c%work(:c%n))
+        call sort_prefix(c, c%n)
         c%q025 = sorted_quantile(c%work(:c%n), 0.025_dp)
         c%q975 = sorted_quantile(c%work(:c%n), 0.975_dp)
         c%exact = cubic_law_applies(scene)
         c%ks = -1.0_dp
-        if (c%exact) then
-            allocate (cdf(c%n))
-            call cubic_law_cdf_all(c%work(:c%n), c%mean, c%sd, c%v0, cdf)
-            c%ks = ks_distance(cdf)
-        end if
+        if (c%exact) c%ks = cubic_law_ks_distance(c%work(:c%n), c%mean, c%sd, c%v0)
         c%redraws_expected = c%n*real(normal_mass_outside_unit(c%mean, c%sd), qp) &
             /(1.0_qp - real(normal_mass_outside_unit(c%mean, c%sd), qp))
         if (c%exact) call c2_check_closed_form(c, scene, error)
@@ -104,10 +100,7 @@ contains
         type(error_t), allocatable, intent(out) :: error
         character(len=300) :: msg
         integer :: stat
-        type(scene_t) :: trial
-        type(run_t) :: run
-        real(qp) :: e_q, inside, exact
-        integer :: stride, i, j
+        real(qp) :: inside
         call single_impact_bound(scene, bracket_lo, bracket_hi, c%bound, stat, msg)
         if (stat /= status_normal) then
             call fatal_error(error, trim(msg))
@@ -117,40 +110,73 @@ contains
         inside = 1.0_qp - real(normal_mass_outside_unit(c%mean, c%sd), qp)
         c%outside_expected = c%n*(real(normal_cdf(real(c%bound, dp), c%mean, c%sd), qp) &
             - real(normal_cdf(0.0_dp, c%mean, c%sd), qp))/inside
+        call rerun_closed_form(c, scene)
+        call check_stored_v4(c)
+    end subroutine c2_check_closed_form
 
-        trial = scene
+    !> Every n/closed_form_reruns-th sample of the main sample and those of the
+    !> smallest and the largest e, where inside the region of one impact,
+    !> re-run with the engine in real128 and compared with the closed form:
+    !> `c%reruns` of them, the largest difference `c%max_diff`. The runs are
+    !> shared among the OpenMP threads; a maximum and a count do not depend
+    !> on the order they are taken in.
+    subroutine rerun_closed_form(c, scene)
+        type(c2_sample_t), intent(inout) :: c
+        type(scene_t), intent(in) :: scene
+        type(scene_t) :: trial
+        type(run_t) :: run
+        integer, allocatable :: picks(:)
+        real(qp), allocatable :: diff(:)
+        integer :: stride, i, k
         stride = max(1, c%n/closed_form_reruns)
-        c%max_diff = 0.0_qp
-        c%reruns = 0
-        do i = 1, c%n + 2
-            if (i <= c%n) then
-                if (mod(i, stride) /= 0) cycle
-                j = i
-            else if (i == c%n + 1) then
-                j = minloc(c%e(:c%n), 1)
-            else
-                j = maxloc(c%e(:c%n), 1)
-            end if
-            e_q = real(c%e(j), qp)
-            if (e_q < c%bound) cycle
-            trial%e = e_q
+        picks = [(i, i=stride, c%n, stride), minloc(c%e(:c%n), 1), maxloc(c%e(:c%n), 1)]
+        ! -1 marks a sample outside the region, not re-run
+        allocate (diff(size(picks)), source=-1.0_qp)
+        !$omp parallel do schedule(dynamic, 8) default(shared) private(k, trial, run)
+        do k = 1, size(picks)
+            trial = scene
+            trial%e = real(c%e(picks(k)), qp)
+            if (trial%e < c%bound) cycle
             call simulate(trial, run)
-            c%max_diff = max(c%max_diff, abs(run%v(4) - cubic_law_v4(e_q, c%v0)))
-            c%reruns = c%reruns + 1
+            diff(k) = abs(run%v(4) - cubic_law_v4(trial%e, c%v0))
         end do
+        !$omp end parallel do
+        c%reruns = count(diff >= 0.0_qp)
+        c%max_diff = max(0.0_qp, maxval(diff))
+    end subroutine rerun_closed_form
 
-        c%mismatches = 0
-        c%checks = 0
-        do i = max(1, c%n/closed_form_checks), c%n, max(1, c%n/closed_form_checks)
-            c%checks = c%checks + 1
+    !> The stored v4 of every (n/closed_form_checks)-th sample of the main
+    !> sample inside the region against the closed form: `c%checks` samples
+    !> looked at, `c%mismatches` of them farther from it than the closed form
+    !> rounded to a double plus the largest certified bound (counted on the
+    !> OpenMP threads: a sum of integers).
+    subroutine check_stored_v4(c)
+        type(c2_sample_t), intent(inout) :: c
+        real(qp) :: e_q, exact
+        integer :: stride, i, mismatches
+        stride = max(1, c%n/closed_form_checks)
+        mismatches = 0
+        !$omp parallel do schedule(static) default(shared) private(i, e_q, exact) &
+        !$omp reduction(+: mismatches)
+        do i = stride, c%n, stride
             e_q = real(c%e(i), qp)
             if (e_q < c%bound) cycle
             exact = cubic_law_v4(e_q, c%v0)
             if (abs(c%v4(i) - exact) > abs(real(exact, dp) - exact) + c%counts%bound_max) then
-                c%mismatches = c%mismatches + 1
+                mismatches = mismatches + 1
             end if
         end do
-    end subroutine c2_check_closed_form
+        !$omp end parallel do
+        c%mismatches = mismatches
+        c%checks = c%n/stride
+    end subroutine check_stored_v4
+
+    !> The first m samples of v4 sorted into `c%work`.
+    subroutine sort_prefix(c, m)
+        type(c2_sample_t), intent(inout) :: c
+        integer, intent(in) :: m
+        call sort_values(c%work(:m), c%v4(:m))
+    end subroutine sort_prefix
 
     !> How many of the doubles x lie below the real(16) number b, compared in
     !> double: with b_d the double nearest b, x < b if and only if x < b_d
@@ -349,38 +375,67 @@ contains
 
     !> c2_ecdf.tsv: the empirical distribution function at every k-th order
     !> statistic (and the first and last), with the normal law of the sample's
-    !> mean and deviation and the exact law at the same v4.
+    !> mean and deviation and the exact law at the same v4. The rows are
+    !> formatted on the OpenMP threads (see row_t) and written in order.
     subroutine write_ecdf(c, unit)
         type(c2_sample_t), intent(in) :: c
         integer, intent(in) :: unit
-        integer :: i, k
-        character(len=:), allocatable :: exact_text
+        integer, allocatable :: ranks(:)
+        type(row_t), allocatable :: rows(:)
+        integer :: i, j
         write (unit, "(a)") "rank[1]"//tab//"v4[V]"//tab//"ecdf[1]"//tab//"normal_cdf[1]" &
             //tab//"exact_cdf[1]"
-        k = max(1, c%n/ecdf_rows)
-        do i = 1, c%n
-            if (.not. ecdf_row(i, k)) cycle
-            exact_text = "-"
-            if (c%exact) exact_text = dstr(cubic_law_cdf(c%work(i), c%mean, c%sd, c%v0))
-            write (unit, "(a)") itoa(i)//tab//dstr(c%work(i))//tab &
-                //dstr(real(i, dp)/real(c%n, dp))//tab &
-                //dstr(normal_cdf(c%work(i), real(c%v_mean, qp), real(c%v_sd, qp)))//tab &
-                //exact_text
+        ranks = ecdf_ranks(c%n)
+        allocate (rows(size(ranks)))
+        !$omp parallel do schedule(static) default(shared) private(i, j)
+        do j = 1, size(ranks)
+            i = ranks(j)
+            call rows(j)%add(i)
+            call rows(j)%add(real(c%work(i), qp), dp_digits)
+            call rows(j)%add(real(real(i, dp)/real(c%n, dp), qp), dp_digits)
+            call rows(j)%add(real(normal_cdf(c%work(i), real(c%v_mean, qp), &
+                real(c%v_sd, qp)), qp), dp_digits)
+            if (c%exact) then
+                call rows(j)%add(real(cubic_law_cdf(c%work(i), c%mean, c%sd, c%v0), qp), &
+                    dp_digits)
+            else
+                call rows(j)%add("-")
+            end if
         end do
-
-    contains
-
-        !> Rows of the distribution function table: every k-th order statistic,
-        !> the first and last, and in the outer k of each tail every k/20-th, so
-        !> that the tails (where the laws differ most in relative terms) are drawn
-        !> with points too.
-        pure logical function ecdf_row(i, k)
-            integer, intent(in) :: i, k
-            ecdf_row = i == 1 .or. i == c%n .or. mod(i, k) == 0
-            if (i < k .or. i > c%n - k) ecdf_row = ecdf_row .or. mod(i, max(1, k/20)) == 0
-        end function ecdf_row
-
+        !$omp end parallel do
+        do j = 1, size(rows)
+            write (unit, "(a)") rows(j)%text
+        end do
     end subroutine write_ecdf
+
+    !> The ranks of the rows of c2_ecdf.tsv for a sample of n: every k-th
+    !> order statistic (k = n/ecdf_rows), the first and last, and in the outer
+    !> k of each tail every k/20-th, so that the tails (where the laws differ
+    !> most in relative terms) are drawn with points too. Between the tails
+    !> only the multiples of k are looked at.
+    pure function ecdf_ranks(n) result(ranks)
+        integer, intent(in) :: n
+        integer, allocatable :: ranks(:)
+        integer :: k, fine, i, rows
+        k = max(1, n/ecdf_rows)
+        fine = max(1, k/20)
+        allocate (ranks(n/k + 2*k + 2))
+        rows = 0
+        i = 1
+        do while (i <= n)
+            if (i == 1 .or. i == n .or. mod(i, k) == 0 .or. &
+                ((i < k .or. i > n - k) .and. mod(i, fine) == 0)) then
+                rows = rows + 1
+                ranks(rows) = i
+            end if
+            if (i + 1 < k .or. i + 1 > n - k) then
+                i = i + 1
+            else
+                i = min((i/k + 1)*k, n - k + 1)
+            end if
+        end do
+        ranks = ranks(:rows)
+    end function ecdf_ranks
 
     !> c2_histogram.tsv: `bins` equal bins from the smallest to the largest v4
     !> of the main sample, with the exact density and the normal density of the
@@ -396,10 +451,13 @@ contains
         low = c%work(1)
         width = (c%work(c%n) - low)/c%bins
         if (.not. (width > 0.0_dp)) width = 1.0_dp
+        ! counts: the same sums on any number of threads
+        !$omp parallel do schedule(static) default(shared) private(i, j) reduction(+: hits)
         do i = 1, c%n
             j = min(c%bins, 1 + int((c%work(i) - low)/width))
             hits(j) = hits(j) + 1
         end do
+        !$omp end parallel do
         write (unit, "(a)") "v4_centre[V]"//tab//"count[1]"//tab//"density[1/V]"//tab &
             //"exact_density[1/V]"//tab//"normal_density[1/V]"
         do j = 1, c%bins
@@ -449,8 +507,7 @@ contains
                 p_q975 = c%q975
             else
                 call sample_moments(c%v4(:m), p_mean, p_sd)
-                c%work(:m) = c%v4(:m)
-                call sort_values(c%work(:m))
+                call sort_prefix(c, m)
                 p_q025 = sorted_quantile(c%work(:m), 0.025_dp)
                 p_q975 = sorted_quantile(c%work(:m), 0.975_dp)
             end if
@@ -463,11 +520,11 @@ contains
         end do
     end subroutine write_convergence
 
-    !> A double with 17 significant digits, enough to give back its bits.
+    !> A double with dp_digits significant digits.
     pure function dstr(x) result(s)
         real(dp), intent(in) :: x
         character(len=:), allocatable :: s
-        s = real_str(real(x, qp), 17)
+        s = real_str(real(x, qp), dp_digits)
     end function dstr
 
 end module sphere_row_c2_tables

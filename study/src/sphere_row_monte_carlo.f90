@@ -35,7 +35,7 @@ module sphere_row_monte_carlo
     public :: ks_distance
     public :: cubic_law_applies, cubic_law_mean, cubic_law_sd, cubic_law_quantile
     public :: cubic_law_cdf, cubic_law_density, cubic_law_v4, single_impact_bound
-    public :: cubic_law_cdf_all
+    public :: cubic_law_ks_distance
 
     !> Smallest share of the normal law that must lie in [0, 1]: samples outside
     !> are drawn again, so a smaller share would multiply the cost (by up to
@@ -463,34 +463,55 @@ contains
     !> and the shift (within a few sd of the mean) keeps the cancellation in
     !> sum d^2 - (sum d)^2/n to a factor of about 20; so mean and sd are good to
     !> about 1e-11 of sd, six orders below their own standard errors.
-    pure subroutine sample_moments(x, mean, sd)
+    !>
+    !> The chunks of a long sample are summed on the OpenMP threads and their
+    !> sums added in chunk order: the same bits for any number of threads.
+    subroutine sample_moments(x, mean, sd)
         real(dp), intent(in) :: x(:)
         real(dp), intent(out) :: mean, sd
-        integer, parameter :: chunk = 4096
-        real(dp) :: shift, s1, s2, c1, c2, d
-        integer :: i, j, n
+        !> Values per chunk, and the fewest chunks worth sharing among threads.
+        integer, parameter :: chunk = 4096, shared_chunks = 64
+        real(dp), allocatable :: c1(:), c2(:)
+        real(dp) :: shift, s1, s2
+        integer :: j, n, chunks
         mean = 0.0_dp
         sd = 0.0_dp
         n = size(x)
         if (n == 0) return
         shift = x(1)
+        chunks = (n - 1)/chunk + 1
+        allocate (c1(chunks), c2(chunks))
+        !$omp parallel do schedule(static) default(shared) private(j) &
+        !$omp if (chunks >= shared_chunks)
+        do j = 1, chunks
+            call shifted_sums(x((j - 1)*chunk + 1:min(n, j*chunk)), shift, c1(j), c2(j))
+        end do
+        !$omp end parallel do
         s1 = 0.0_dp
         s2 = 0.0_dp
-        do j = 1, n, chunk
-            c1 = 0.0_dp
-            c2 = 0.0_dp
-            do i = j, min(n, j + chunk - 1)
-                d = x(i) - shift
-                c1 = c1 + d
-                c2 = c2 + d*d
-            end do
-            s1 = s1 + c1
-            s2 = s2 + c2
+        do j = 1, chunks
+            s1 = s1 + c1(j)
+            s2 = s2 + c2(j)
         end do
         mean = shift + s1/n
         if (n == 1) return
         sd = sqrt(max(0.0_dp, (s2 - s1*(s1/n))/(n - 1)))
     end subroutine sample_moments
+
+    !> The sums of x - shift and of its square, added in the order of x.
+    pure subroutine shifted_sums(x, shift, s1, s2)
+        real(dp), intent(in) :: x(:), shift
+        real(dp), intent(out) :: s1, s2
+        real(dp) :: d
+        integer :: i
+        s1 = 0.0_dp
+        s2 = 0.0_dp
+        do i = 1, size(x)
+            d = x(i) - shift
+            s1 = s1 + d
+            s2 = s2 + d*d
+        end do
+    end subroutine shifted_sums
 
     !> Standard normal quantile z_p from GSL (a double, held exactly in real128).
     pure function normal_quantile(p) result(z)
@@ -515,11 +536,13 @@ contains
         half_width = normal_quantile(0.5_qp + confidence/2)*sd/sqrt(real(n, qp))
     end function mean_ci_half_width
 
-    !> Sort into ascending order in place: a radix sort, O(n) (10^7 values in
-    !> a fraction of a second where a heapsort takes seconds).
-    subroutine sort_values(x)
+    !> Sort into ascending order in place, or into x the values of `source`:
+    !> a radix sort, O(n) (10^7 values in a fraction of a second where a
+    !> heapsort takes seconds).
+    subroutine sort_values(x, source)
         real(dp), contiguous, intent(inout) :: x(:)
-        call radix_sort(x)
+        real(dp), intent(in), optional :: source(:)
+        call radix_sort(x, source)
     end subroutine sort_values
 
     !> Quantile of level f (0 <= f <= 1) of sorted data, GSL's definition:
@@ -536,19 +559,29 @@ contains
     !> Kolmogorov–Smirnov distance sup |F_n - F| of a sample to a continuous
     !> law F, from F at the sorted sample: the empirical function jumps from
     !> (i-1)/n to i/n at the i-th order statistic, so the supremum is attained
-    !> at one side of a jump.
-    pure function ks_distance(cdf_at_sorted) result(distance)
+    !> at one side of a jump. A maximum does not depend on the order it is
+    !> taken in: the sample is shared among the OpenMP threads.
+    function ks_distance(cdf_at_sorted) result(distance)
         real(dp), intent(in) :: cdf_at_sorted(:)
         real(dp) :: distance
         real(dp) :: n
         integer :: i
         n = real(size(cdf_at_sorted), dp)
         distance = 0.0_dp
+        !$omp parallel do schedule(static) default(shared) private(i) reduction(max: distance)
         do i = 1, size(cdf_at_sorted)
-            distance = max(distance, real(i, dp)/n - cdf_at_sorted(i), &
-                cdf_at_sorted(i) - real(i - 1, dp)/n)
+            distance = max(distance, ks_gap(i, n, cdf_at_sorted(i)))
         end do
+        !$omp end parallel do
     end function ks_distance
+
+    !> |F_n - F| on either side of the jump of F_n at the i-th of n order
+    !> statistics, where F is f: the larger of i/n - f and f - (i-1)/n.
+    elemental real(dp) function ks_gap(i, n, f)
+        integer, intent(in) :: i
+        real(dp), intent(in) :: n, f
+        ks_gap = max(real(i, dp)/n - f, f - real(i - 1, dp)/n)
+    end function ks_gap
 
     !> True for the rows whose last sphere ends at v0 ((1+e)/2)^3 wherever it
     !> is struck only once: the definition's four equal spheres at equal,
@@ -612,24 +645,29 @@ contains
         p = gsl_cdf_ugaussian_p(standard_score(v, m, s, v0))
     end function cubic_law_cdf
 
-    !> cubic_law_cdf at every value of v, into p (of the same size): the law's
-    !> parameters converted to double once, the values shared among threads
-    !> (each p(i) is the same for any number of them).
-    subroutine cubic_law_cdf_all(v, m, s, v0, p)
-        real(dp), intent(in) :: v(:)
+    !> ks_distance of a sorted sample to the law of v0 ((1+e)/2)^3, e ~ N(m,
+    !> s^2), whose distribution function (cubic_law_cdf) is taken at each
+    !> value as it is needed: the law's parameters converted to double once,
+    !> the values shared among threads (a maximum, the same for any number of
+    !> them).
+    function cubic_law_ks_distance(sorted, m, s, v0) result(distance)
+        real(dp), intent(in) :: sorted(:)
         real(qp), intent(in) :: m, s, v0
-        real(dp), intent(out) :: p(:)
-        real(dp) :: m_d, s_d, v0_d
+        real(dp) :: distance
+        real(dp) :: m_d, s_d, v0_d, n
         integer :: i
         m_d = real(m, dp)
         s_d = real(s, dp)
         v0_d = real(v0, dp)
-        !$omp parallel do schedule(static) default(shared) private(i)
-        do i = 1, size(v)
-            p(i) = gsl_cdf_ugaussian_p(score(v(i), m_d, s_d, v0_d))
+        n = real(size(sorted), dp)
+        distance = 0.0_dp
+        !$omp parallel do schedule(static) default(shared) private(i) reduction(max: distance)
+        do i = 1, size(sorted)
+            distance = max(distance, ks_gap(i, n, &
+                gsl_cdf_ugaussian_p(score(sorted(i), m_d, s_d, v0_d))))
         end do
         !$omp end parallel do
-    end subroutine cubic_law_cdf_all
+    end function cubic_law_ks_distance
 
     !> Density of v0 ((1+e)/2)^3, e ~ N(m, s^2): phi(z) dz/dv with
     !> z = (2 (v/v0)^(1/3) - 1 - m)/s, dz/dv = 2 (v/v0)^(-2/3) / (3 s v0).

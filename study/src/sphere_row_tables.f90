@@ -1,10 +1,13 @@
 !> Output of the study programs: TSV tables with one header row, and the
 !> per-task answer tables that results/answers.tsv and the summary are made of.
 module sphere_row_tables
-    use sphere_row, only: status_normal, status_invalid
+    use, intrinsic :: iso_fortran_env, only: int64
+    use sphere_row, only: qp, status_normal, status_invalid, real_text, int_text, &
+        number_text_length, status_text, status_word_length
     implicit none
     private
     public :: open_table, write_answer, answer_header, tab, split_tabs, cpu_model, yes_no
+    public :: row_t
 
     !> The field separator.
     character(len=*), parameter :: tab = achar(9)
@@ -13,7 +16,82 @@ module sphere_row_tables
     character(len=*), parameter :: answer_header = "key"//tab//"value"//tab//"check"//tab &
         //"check_value"//tab//"difference"//tab//"how"
 
+    !> One row of a table, built field by field (tab-separated) where OpenMP
+    !> threads build rows at once: numbers and words are written into
+    !> buffers of fixed length by real_text, int_text and status_text and
+    !> appended, never made by a character function of deferred length
+    !> (gfortran 12 keeps the length of such a result in a static variable of
+    !> the caller, which two threads then share).
+    type :: row_t
+        !> The fields so far, without the line's end.
+        character(len=:), allocatable :: text
+    contains
+        procedure, private :: add_text => row_add_text
+        procedure, private :: add_real => row_add_real
+        procedure, private :: add_int => row_add_int
+        procedure, private :: add_int64 => row_add_int64
+        !> Append a field: a text, a real(16) with every significant digit
+        !> (or `digits` of them, as real_str writes it), an integer.
+        generic :: add => add_text, add_real, add_int, add_int64
+        !> Append the word of a status code (status_word) as a field.
+        procedure :: add_status => row_add_status
+    end type row_t
+
 contains
+
+    !> Append `field` to the row, after a tab unless it is the first.
+    pure subroutine row_add_text(row, field)
+        class(row_t), intent(inout) :: row
+        character(len=*), intent(in) :: field
+        if (allocated(row%text)) then
+            row%text = row%text//tab//field
+        else
+            row%text = field
+        end if
+    end subroutine row_add_text
+
+    !> Append x with `digits` significant digits (default every one of
+    !> real(16), as str writes it).
+    pure subroutine row_add_real(row, x, digits)
+        class(row_t), intent(inout) :: row
+        real(qp), intent(in) :: x
+        integer, intent(in), optional :: digits
+        character(len=number_text_length) :: text
+        integer :: length
+        if (present(digits)) then
+            call real_text(x, digits, text, length)
+        else
+            call real_text(x, precision(x) + 1, text, length)
+        end if
+        call row%add_text(text(:length))
+    end subroutine row_add_real
+
+    !> Append a default integer.
+    pure subroutine row_add_int(row, i)
+        class(row_t), intent(inout) :: row
+        integer, intent(in) :: i
+        call row%add_int64(int(i, int64))
+    end subroutine row_add_int
+
+    !> Append a 64-bit integer.
+    pure subroutine row_add_int64(row, i)
+        class(row_t), intent(inout) :: row
+        integer(int64), intent(in) :: i
+        character(len=number_text_length) :: text
+        integer :: length
+        call int_text(i, text, length)
+        call row%add_text(text(:length))
+    end subroutine row_add_int64
+
+    !> Append the word of a status code.
+    pure subroutine row_add_status(row, status)
+        class(row_t), intent(inout) :: row
+        integer, intent(in) :: status
+        character(len=status_word_length) :: text
+        integer :: length
+        call status_text(status, text, length)
+        call row%add_text(text(:length))
+    end subroutine row_add_status
 
     !> Create directory `dir` if needed and open `dir/name` for writing, with
     !> `header` as its first line. `stat` is status_invalid (and `msg` says

@@ -2,13 +2,14 @@
 !> helpers on samples with known answers, the rule for e outside [0, 1], and
 !> a small Monte Carlo against the exact law of v4.
 module test_monte_carlo
+    use, intrinsic :: iso_fortran_env, only: int64
     use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
     use sphere_row, only: dp, qp, scene_t, scene_init, status_normal, status_invalid, str
     use sphere_row_monte_carlo, only: normal_sampler_t, mc_counts_t, monte_carlo_v4, &
         normal_mass_outside_unit, normal_cdf, normal_density, sample_moments, &
         normal_quantile, mean_ci_half_width, sort_values, sorted_quantile, ks_distance, &
         cubic_law_applies, cubic_law_mean, cubic_law_sd, cubic_law_quantile, cubic_law_cdf, &
-        cubic_law_density, cubic_law_v4, single_impact_bound
+        cubic_law_density, cubic_law_v4, single_impact_bound, cubic_law_ks_distance
     use sphere_row_sorting, only: radix_sort, sort
     use testsuite, only: error_t, unittest_t, new_unittest, check
     !$ use omp_lib, only: omp_set_num_threads, omp_get_max_threads
@@ -37,6 +38,7 @@ contains
             new_unittest("box_muller_unseeded_nan", test_unseeded), &
             new_unittest("moments_quantiles_known_sample", test_known_sample), &
             new_unittest("ks_distance_known", test_ks_known), &
+            new_unittest("cubic_law_ks_distance", test_cubic_ks), &
             new_unittest("ci_half_width", test_ci_half_width), &
             new_unittest("normal_tails", test_normal_tails), &
             new_unittest("cubic_law_moments_by_quadrature", test_cubic_law_moments), &
@@ -46,6 +48,7 @@ contains
             new_unittest("small_mc_against_closed_form", test_small_mc), &
             new_unittest("single_impact_bound", test_single_impact_bound), &
             new_unittest("radix_sort_orders_doubles", test_radix_sort), &
+            new_unittest("radix_sort_same_for_any_threads", test_radix_sort_threads), &
             new_unittest("lean_mc_equals_engine_mc", test_lean_mc), &
             new_unittest("mc_same_for_any_threads", test_threads), &
             new_unittest("mc_block_counts_add_up", test_block_counts) &
@@ -422,6 +425,61 @@ contains
         call radix_sort(x)
         call check(error, all(x == 0.5_dp), "equal values changed")
     end subroutine test_radix_sort
+
+    !> The KS distance to the cubic law taken in one pass equals ks_distance
+    !> of cubic_law_cdf at the sorted sample, bit for bit (3 10^4 values, on
+    !> as many threads as OpenMP gives).
+    subroutine test_cubic_ks(error)
+        type(error_t), allocatable, intent(out) :: error
+        integer, parameter :: n = 30000
+        real(dp) :: v(n)
+        integer :: i
+        do i = 1, n
+            v(i) = real(cubic_law_v4(m_def + s_def*(real(i, qp)/n - 0.47_qp)*5, 1.0_qp), dp)
+        end do
+        call check(error, cubic_law_ks_distance(v, m_def, s_def, 1.0_qp) == &
+            ks_distance(cubic_law_cdf(v, m_def, s_def, 1.0_qp)), "the two distances differ")
+    end subroutine test_cubic_ks
+
+    !> 2 10^5 doubles of both signs and many magnitudes, with zeros of both
+    !> signs and runs of equal values, sorted on one, two and three threads
+    !> (where built with OpenMP; on three, from a source array into another):
+    !> the same bits each time, in ascending order, -0 before +0.
+    subroutine test_radix_sort_threads(error)
+        type(error_t), allocatable, intent(out) :: error
+        integer, parameter :: n = 200000
+        real(dp), allocatable :: x(:, :), unsorted(:), x_in(:)
+        integer :: i, threads, t
+        allocate (x(n, 3))
+        do i = 1, n
+            x(i, 1) = (modulo(i*0.6180339887498949_dp, 1.0_dp) - 0.4_dp)*10.0_dp**mod(i, 11)
+        end do
+        x(1000:1999, 1) = -0.0_dp
+        x(2000:2999, 1) = 0.0_dp
+        x(50000:90000:7, 1) = 0.375_dp
+        x(:, 2) = x(:, 1)
+        x(:, 3) = 0.0_dp
+        unsorted = x(:, 1)
+        x_in = x(:, 1)
+        threads = 1
+        !$ threads = omp_get_max_threads()
+        do t = 1, 3
+            !$ call omp_set_num_threads(t)
+            if (t < 3) call radix_sort(x(:, t))
+            ! the third from a source left as it is
+            if (t == 3) call radix_sort(x(:, t), source=unsorted)
+        end do
+        !$ call omp_set_num_threads(threads)
+        call check(error, all(transfer(unsorted, 1_int64, n) == transfer(x_in, 1_int64, n)), &
+            "the source changed")
+        call check(error, all(transfer(x(:, 2), 1_int64, n) == transfer(x(:, 1), 1_int64, n)) &
+            .and. all(transfer(x(:, 3), 1_int64, n) == transfer(x(:, 1), 1_int64, n)), &
+            "the sorted bits depend on the number of threads")
+        call check(error, all(x(:n - 1, 1) <= x(2:, 1)), "not in ascending order")
+        call check(error, sign(1.0_dp, x(count(x(:, 1) < 0.0_dp) + 1, 1)) < 0.0_dp &
+            .and. sign(1.0_dp, x(count(x(:, 1) <= 0.0_dp), 1)) > 0.0_dp, &
+            "the zeros are not -0 first, then +0")
+    end subroutine test_radix_sort_threads
 
     !> The Monte Carlo on the lean path and on the engine give the same
     !> samples and counts, bit for bit, over a stretch of the stream across a

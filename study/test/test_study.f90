@@ -8,6 +8,8 @@ module test_study
     use sphere_row_bisection, only: bisect_changes
     use sphere_row_secant, only: secant, secant_result_t, secant_converged, secant_flat, &
         secant_left_interval, secant_invalid
+    use sphere_row, only: itoa, status_word, status_collapsed, real_str
+    use sphere_row_tables, only: row_t, tab
     use testsuite, only: error_t, unittest_t, new_unittest, check
     implicit none
     private
@@ -33,9 +35,61 @@ contains
             new_unittest("bisect_change_of_n", test_bisect_n), &
             new_unittest("critical_restitution_4", test_critical), &
             new_unittest("tail_period", test_tail_period), &
-            new_unittest("sequence_polynomials", test_polynomials) &
+            new_unittest("sequence_polynomials", test_polynomials), &
+            new_unittest("table_rows_on_threads", test_rows_on_threads) &
             ]
     end function collect_study
+
+    !> 2 10^4 table rows built at once on the OpenMP threads (where built with
+    !> it) by row_t: each the same bytes as str, itoa and status_word write
+    !> on one thread, for reals of every size (with exponents of four digits,
+    !> nan and inf), integers of both signs (the most negative int64 too) and
+    !> status words.
+    subroutine test_rows_on_threads(error)
+        type(error_t), allocatable, intent(out) :: error
+        integer, parameter :: n = 20000
+        type(row_t), allocatable :: rows(:)
+        character(len=:), allocatable :: expected, first_bad
+        real(qp) :: zero
+        integer :: i, bad
+        allocate (rows(n))
+        zero = 0
+        !$omp parallel do schedule(dynamic, 7) default(shared) private(i)
+        do i = 1, n
+            call rows(i)%add(value_of(i))
+            call rows(i)%add(i - n/2)
+            call rows(i)%add(-huge(1_8) - 1_8 + i)
+            call rows(i)%add_status(mod(i, 3))
+            call rows(i)%add("-")
+            call rows(i)%add(value_of(i)/3, 17)
+        end do
+        !$omp end parallel do
+        bad = 0
+        do i = 1, n
+            expected = str(value_of(i))//tab//itoa(i - n/2)//tab//itoa(-huge(1_8) - 1_8 + i) &
+                //tab//status_word(mod(i, 3))//tab//"-"//tab//real_str(value_of(i)/3, 17)
+            if (rows(i)%text == expected) cycle
+            bad = bad + 1
+            if (bad == 1) first_bad = "; row "//itoa(i)//" is '"//rows(i)%text//"', not '" &
+                //expected//"'"
+        end do
+        if (bad > 0) call check(error, .false., itoa(bad)//" rows differ from str, itoa and " &
+            //"status_word"//first_bad)
+        call check(error, status_word(status_collapsed) == "quasi_plastic", "status word")
+
+    contains
+
+        !> Reals of every size: i-th power of -3/2 scaled into and beyond
+        !> four-digit exponents, and nan and inf among them.
+        real(qp) function value_of(i)
+            integer, intent(in) :: i
+            value_of = (-1.5_qp)**mod(i, 400)*10.0_qp**(mod(i, 401) - 200)/7
+            if (mod(i, 997) == 0) value_of = zero/zero
+            if (mod(i, 991) == 0) value_of = -1/zero
+            if (mod(i, 983) == 0) value_of = 1.0e-200_qp*value_of**10
+        end function value_of
+
+    end subroutine test_rows_on_threads
 
     function cubic_minus_two(x) result(f)
         real(qp), intent(in) :: x
