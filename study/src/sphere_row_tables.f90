@@ -95,14 +95,17 @@ contains
 
     !> Create directory `dir` if needed and open `dir/name` for writing, with
     !> `header` as its first line. `stat` is status_invalid (and `msg` says
-    !> why) if that is impossible.
+    !> why) if that is impossible. The shell that makes the directory is
+    !> started only where it is missing (a shell costs milliseconds).
     subroutine open_table(dir, name, header, unit, stat, msg)
         character(len=*), intent(in) :: dir, name, header
         integer, intent(out) :: unit, stat
         character(len=*), intent(out) :: msg
         integer :: ios
         character(len=200) :: iomsg
-        call execute_command_line("mkdir -p '"//dir//"'", exitstat=ios)
+        logical :: there
+        inquire (file=dir//"/.", exist=there)
+        if (.not. there) call execute_command_line("mkdir -p '"//dir//"'", exitstat=ios)
         stat = status_invalid
         open (newunit=unit, file=dir//"/"//name, status="replace", action="write", &
             iostat=ios, iomsg=iomsg)
