@@ -239,8 +239,8 @@ contains
     !> At 0 < e < 1, touching rows (every gap closed; masses equal or over four
     !> decades) struck by sphere 1: where the fallback rule alone answers, a
     !> run with the certified limit of cascades through touching spheres ends
-    !> the same way with the same velocities. A limit taken where the cascade
-    !> in fact ends would show here as velocities far apart.
+    !> with the same velocities, sooner. A limit taken where the cascade in
+    !> fact ends would show here as velocities far apart.
     subroutine test_touching_cascade(error)
         type(error_t), allocatable, intent(out) :: error
         type(scene_t) :: scene
@@ -255,14 +255,15 @@ contains
             p = 3 + int(8*u(1))
             call scene_init(scene, stat, msg, p=p, e=u(2), &
                 masses=merge(1.0_qp, 1.0e2_qp**(2*u(3:p + 2) - 1), u(24) < 0.5_qp), &
-                gaps=[(0.0_qp, stat=1, p - 1)], max_collisions=100000)
+                gaps=spread(0.0_qp, 1, p - 1), max_collisions=100000)
             call simulate(scene, fast)
             scene%closed_form_limits = .false.
             call simulate(scene, slow)
             if (slow%status == status_max_collisions .or. fast%closed_limits == 0) cycle
             compared = compared + 1
-            call check(error, fast%status == slow%status .and. fast%n <= slow%n, &
-                "touching cascade: status or count differs from the fallback's")
+            ! (a run that the fallback ends `normal`, its last rates within tol
+            ! of 0 but converging to one velocity, may end collapsed here)
+            call check(error, fast%n <= slow%n, "touching cascade: more collisions than the fallback")
             if (allocated(error)) return
             call check(error, all(abs(fast%v - slow%v) <= 1.0e-25_qp), &
                 "touching cascade: velocities differ from the fallback's")
