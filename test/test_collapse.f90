@@ -263,7 +263,8 @@ contains
             compared = compared + 1
             ! (a run that the fallback ends `normal`, its last rates within tol
             ! of 0 but converging to one velocity, may end collapsed here)
-            call check(error, fast%n <= slow%n, "touching cascade: more collisions than the fallback")
+            call check(error, fast%n <= slow%n, &
+                "touching cascade: more collisions than the fallback")
             if (allocated(error)) return
             call check(error, all(abs(fast%v - slow%v) <= 1.0e-25_qp), &
                 "touching cascade: velocities differ from the fallback's")
