@@ -29,6 +29,7 @@ contains
             new_unittest("log_does_not_change_result", test_log_neutral), &
             new_unittest("random_rows_finite_unchanged", test_random_rows), &
             new_unittest("touching_cascade_matches_fallback", test_touching_cascade), &
+            new_unittest("light_spheres_between_heavy", test_light_between_heavy), &
             new_unittest("long_rows_answer", test_long_rows) &
             ]
     end function collect_collapse
@@ -273,6 +274,37 @@ contains
         call check(error, compared >= 20, "touching cascade: too few limits compared: " &
             //achar(48 + compared/10)//achar(48 + mod(compared, 10)))
     end subroutine test_touching_cascade
+
+    !> Three light spheres between two heavy ones (masses over five decades):
+    !> the box, which asks for a merge in every order, is not found, but the
+    !> cascade in the engine's order settles into a contracting pattern. The
+    !> limit (spheres 2..6 at their mean) is the state the fallback reaches
+    !> after some 500,000 collisions, and is reached within 5000.
+    subroutine test_light_between_heavy(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(scene_t) :: scene
+        type(run_t) :: fast, slow
+        integer :: stat
+        character(len=200) :: msg
+        call scene_init(scene, stat, msg, p=6, e=0.875_qp, &
+            masses=[76.0_qp, 143.0_qp, 0.0019_qp, 0.0104_qp, 0.217_qp, 54.5_qp], &
+            gaps=[0.0_qp, 0.62_qp, 1.79_qp, 0.33_qp, 1.3_qp])
+        call simulate(scene, fast)
+        scene%closed_form_limits = .false.
+        scene%max_collisions = 2000000
+        call simulate(scene, slow)
+        call check(error, fast%status == status_collapsed .and. fast%n < 5000 .and. &
+            fast%closed_limits >= 1, "light between heavy: no closed-form limit within 5000")
+        if (allocated(error)) return
+        call check(error, slow%status == status_collapsed .and. slow%n > 100000, &
+            "light between heavy: the fallback alone no longer needs a long run")
+        if (allocated(error)) return
+        call check(error, all(abs(fast%v(2:) - sum(scene%m(2:)*fast%v(2:))/sum(scene%m(2:))) &
+            <= 1.0e4_qp*eps), "light between heavy: spheres 2..6 not at their mean")
+        if (allocated(error)) return
+        call check(error, all(abs(fast%v - slow%v) <= 1.0e-25_qp), &
+            "light between heavy: velocities differ from the fallback's")
+    end subroutine test_light_between_heavy
 
     !> Long rows whose cascades through touching spheres used to run to the
     !> collision cap: each now collapses within a few 10^4 collisions, the

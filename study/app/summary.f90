@@ -124,14 +124,17 @@ contains
             "e uniform in [0, 1], a fifth of the gaps closed) run to their end with the "// &
             "collapse limits in closed form (a plastic cascade pooled at e = 0, a cascade "// &
             "through touching spheres proven to merge by an invariant box of its momentum "// &
-            "ratios, a collision cycle certified to repeat for ever) and, for the first of "// &
+            "ratios, or by its sequence in the engine's order at equal times settling into "// &
+            "a contracting pattern of every contact, a collision cycle certified to repeat "// &
+            "for ever) and, for the first of "// &
             "them, with the fallback alone (every rate and gap of a group insignificant). "// &
             field("collapse", "collapse.answered")//" of "// &
             field("collapse", "collapse.answered", check_value)//" rows end within the "// &
             "collision cap (collapse_survey.tsv); the rest collapse in ways no certificate "// &
-            "recognises yet (a touching cascade whose merge the box, which asks for a merge "// &
-            "in every order of the collisions, cannot prove; open-gap collapses that repeat "// &
-            "no pattern), which the fallback ends only slowly.")
+            "recognises yet (a touching cascade whose merge neither the box nor a pattern "// &
+            "of every contact proves, as when a light sphere shuttles between heavy ones "// &
+            "while the rest waits; open-gap collapses that repeat no pattern), which the "// &
+            "fallback ends only slowly.")
         call section("ecrit", "e_crit(p): critical restitution of the struck row of p spheres", &
             [character(len=60) :: "ecrit"], &
             "For every p equal spheres (a = d = v0 = 1) a scan of e decides each run by the "// &
