@@ -9,7 +9,7 @@
 !> other OpenMP threads.
 module sphere_row_bisection
     use, intrinsic :: iso_fortran_env, only: int64
-    !$ use omp_lib, only: omp_get_max_threads
+    !$ use omp_lib, only: omp_get_max_threads, omp_in_parallel
     use sphere_row, only: qp
     implicit none
     private
@@ -63,7 +63,8 @@ contains
     !> bisect's steps, so lo and hi end bit for bit where bisect leaves them,
     !> on any number of threads; the tests off its path are thrown away.
     !> Worth it where each test is long (a run of thousands of collisions);
-    !> `below` must be safe to call on several threads at once.
+    !> `below` must be safe to call on several threads at once. Called on a
+    !> thread of a parallel region, it is bisect (no threads to spare).
     subroutine bisect_ahead(below, lo, hi, width, max_steps)
         procedure(side_fn) :: below
         real(qp), intent(inout) :: lo, hi
@@ -73,7 +74,7 @@ contains
         logical, allocatable :: tested(:), side(:)
         integer :: nodes, k, step
         nodes = 1
-        !$ nodes = max(1, omp_get_max_threads())
+        !$ if (.not. omp_in_parallel()) nodes = max(1, omp_get_max_threads())
         ! node k brackets [a(k), b(k)]; node 2k is the half above its midpoint
         ! (left when below() holds there), node 2k+1 the half below it
         allocate (a(nodes), b(nodes), mid(nodes), tested(nodes), side(nodes))
