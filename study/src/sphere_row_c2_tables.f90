@@ -211,17 +211,21 @@ contains
     !> How many of the doubles x lie below the real(16) number b, compared in
     !> double: with b_d the double nearest b, x < b if and only if x < b_d
     !> where b_d >= b, and x <= b_d where b_d < b (no double lies between b
-    !> and b_d).
-    pure integer function count_below(x, b) result(below)
+    !> and b_d). Counted on the OpenMP threads (a sum of integers).
+    integer function count_below(x, b) result(below)
         real(dp), intent(in) :: x(:)
         real(qp), intent(in) :: b
         real(dp) :: b_d
+        logical :: or_equal
+        integer :: i
         b_d = real(b, dp)
-        if (real(b_d, qp) >= b) then
-            below = count(x < b_d)
-        else
-            below = count(x <= b_d)
-        end if
+        or_equal = real(b_d, qp) < b
+        below = 0
+        !$omp parallel do schedule(static) default(shared) private(i) reduction(+: below)
+        do i = 1, size(x)
+            if (x(i) < b_d .or. (or_equal .and. x(i) == b_d)) below = below + 1
+        end do
+        !$omp end parallel do
     end function count_below
 
     !> Open every table first, so that a directory that cannot be written is
