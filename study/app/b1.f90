@@ -4,10 +4,10 @@
 program c12_b1
     use sphere_row, only: qp, scene_t, run_t, event_log_t, simulate, str, status_word, &
         status_normal, status_collapsed, itoa, auto_t, simulate_auto
-    use sphere_row_tables, only: open_table, write_answer, answer_header, tab, row_t
+    use sphere_row_tables, only: open_table, write_answer, answer_header, tab, row_t, write_rows
     use sphere_row_analysis, only: sequence_of, sequence_text, sequence_hash, tail_period, &
         critical_restitution
-    use sphere_row_bisection, only: bisect, bisect_changes
+    use sphere_row_bisection, only: bisect_ahead, bisect_changes
     use sphere_row_study_cli, only: cli_t, add_scene_keys, start_program, read_keys, &
         stop_unless_normal, add_precision_key, precision_is_auto
     use sphere_row_sorting, only: sort
@@ -110,9 +110,7 @@ contains
             call scan_rows(i)%add(class_scan(i))
         end do
         !$omp end parallel do
-        do i = 1, n_scan
-            write (unit, "(a)") scan_rows(i)%text
-        end do
+        call write_rows(unit, scan_rows)
         close (unit)
     end subroutine scan
 
@@ -155,6 +153,7 @@ contains
 
     !> Step 3: the critical restitution by simulation alone, with a tolerance
     !> near the bottom of real128's range: bisect finite against collapsed.
+    !> Next steps' runs (16000 collisions each near e_crit) start ahead on other threads.
     subroutine critical_by_simulation()
         !> Half-width of the bracket around e_quasi in which the simulation alone
         !> bisects collapsed against finite runs.
@@ -164,7 +163,7 @@ contains
         scene%tol = tol_fine
         lo = e_quasi - simulation_bracket
         hi = e_quasi + simulation_bracket
-        call bisect(collapses, lo, hi, resolution, max_bisection_steps)
+        call bisect_ahead(collapses, lo, hi, resolution, max_bisection_steps)
         e_c_sim = hi
     end subroutine critical_by_simulation
 
@@ -376,12 +375,15 @@ contains
         close (unit)
     end subroutine write_intervals
 
-    !> Whether the run at e with the scene's tolerance collapses, for bisect.
+    !> Whether the run at e with the scene's tolerance collapses (own scene and run: thread-safe).
     logical function collapses(e)
         real(qp), intent(in) :: e
-        scene%e = e
-        call simulate(scene, run)
-        collapses = run%status == status_collapsed
+        type(scene_t) :: mine
+        type(run_t) :: got
+        mine = scene
+        mine%e = e
+        call simulate(mine, got)
+        collapses = got%status == status_collapsed
     end function collapses
 
     !> classify as a function, for bisect_changes.

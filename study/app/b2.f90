@@ -4,7 +4,7 @@
 program c12_b2
     use sphere_row, only: qp, scene_t, run_t, event_log_t, simulate, str, &
         status_normal, itoa, auto_t, simulate_auto
-    use sphere_row_tables, only: open_table, write_answer, answer_header, tab, row_t
+    use sphere_row_tables, only: open_table, write_answer, answer_header, tab, row_t, write_rows
     use sphere_row_analysis, only: sequence_of, sequence_text, sequence_hash, &
         sequence_polynomials, poly_eval
     use sphere_row_study_cli, only: cli_t, add_scene_keys, start_program, read_keys, &
@@ -26,8 +26,9 @@ program c12_b2
         !> The certified bound on the final velocities, and (a finite run)
         !> the largest |v_i - P_i(e)|, P_i the polynomials of its sequence.
         real(qp) :: v_bound = 0.0_qp, diff = 0.0_qp
-        !> Sphere p hit once (see single_hit_of).
+        !> Sphere p hit once (see single_hit_of); a listable sequence's fingerprint (else 0).
         logical :: single_hit = .false.
+        integer(8) :: hash = 0
         !> Its row of b2_velocities.tsv.
         type(row_t) :: row
     end type point_t
@@ -103,8 +104,8 @@ contains
             else
                 contiguous = .false.
             end if
-            write (unit, "(a)") points(j)%row%text
         end do
+        call write_rows(unit, points%row)
         close (unit)
         close (unit_forms)
     end subroutine tabulate
@@ -138,6 +139,7 @@ contains
                 if (pt%status == status_normal) then
                     pt%diff = polynomial_difference(pt, mine%e)
                     pt%single_hit = single_hit_of(pt%pairs)
+                    if (size(pt%pairs) <= max_listed) pt%hash = sequence_hash(pt%pairs)
                 end if
                 call format_row(pt, mine%e)
             end associate
@@ -220,12 +222,12 @@ contains
         else
             contiguous = .false.
         end if
+        if (size(pt%pairs) > max_listed) return
+        if (any(seen == pt%hash)) return
+        seen = [seen, pt%hash]
         pairs = pt%pairs
-        if (size(pairs) <= max_listed .and. .not. any(seen == sequence_hash(pairs))) then
-            seen = [seen, sequence_hash(pairs)]
-            call sequence_polynomials(scene%m, scene%v0, pairs, coef)
-            call list_forms(e)
-        end if
+        call sequence_polynomials(scene%m, scene%v0, pairs, coef)
+        call list_forms(e)
     end subroutine count_closed_forms
 
     !> The answers of task b2: how far the grid agrees with the closed forms, and

@@ -215,7 +215,7 @@ contains
             sweep_t("c12-c2", "c12-c2", "its defaults, 10^6 runs"), &
             sweep_t("c12-c2.nmax_1e7", "c12-c2 nmax=10000000", "as make study runs it"), &
             sweep_t("c12-b1", "c12-b1", "the whole task: scan, bisections of its changes, " &
-            //"and the serial search for e_crit"), &
+            //"and the search for e_crit (a chain of runs; the next steps' run ahead)"), &
             sweep_t("c12-b1.sweep", "c12-b1 critical=no", "the scan of e and the bisections " &
             //"of its changes"), &
             sweep_t("c12-b2", "c12-b2 n_grid=20001", "the grid of e, 20 times denser than " &

@@ -33,15 +33,15 @@ program c12_methods
 
     type(cli_t) :: cli
     character(len=:), allocatable :: out_dir
-    character(len=300) :: msg
     type(method_t), allocatable :: methods(:)
     logical, allocatable :: in_map(:)
     integer :: repeats, points, stat
     integer(int64) :: max_steps
     real(qp) :: min_time
     real :: clock_start, clock_end
-    !> The method under test in min_distance's bisection.
-    type(method_t) :: tested
+    !> The method under test in min_distance's bisection, each thread's own.
+    type(method_t), save :: tested
+    !$omp threadprivate(tested)
 
     call cpu_time(clock_start)
     call define_keys()
@@ -168,8 +168,8 @@ contains
                     cmp%t_error*scene%v0/max(scene%d, maxval(scene%a)))
                 call method_time(methods(m), min_time, repeats, seconds, batches, &
                     runs)
-                write (unit, "(a)") itoa(s)//tab//str(scenes(s))//tab//str(scenes(s) - e_crit)//tab &
-                    //method_label(methods(m))//tab//method_name(methods(m))//tab &
+                write (unit, "(a)") itoa(s)//tab//str(scenes(s))//tab//str(scenes(s) - e_crit) &
+                    //tab//method_label(methods(m))//tab//method_name(methods(m))//tab &
                     //kind_name(methods(m)%precision)//tab//str(method_setting(methods(m))) &
                     //tab//str(seconds)//tab//itoa(batches)//tab//itoa(runs)//tab//itoa(run%n) &
                     //tab//itoa(ref%n)//tab//yes_no(cmp%same_count)//tab &
@@ -271,9 +271,11 @@ contains
         type(method_t), allocatable :: chosen(:)
         type(outcome_t) :: ref, run
         type(scene_t) :: scene
-        real(qp) :: right_log, wrong_log, nan
-        integer :: m, k, k_right, n_right, unit, ref_limit
-        logical :: reliable
+        real(qp) :: wrong_log, nan
+        real(qp), allocatable :: right_log(:)
+        integer :: m, k, unit, ref_limit
+        integer, allocatable :: k_right(:), n_right(:)
+        logical, allocatable :: reliable(:)
         nan = ieee_value(nan, ieee_quiet_nan)
         chosen = [engine_methods(tiny_tol=.false.), engine_methods(tiny_tol=.true.), &
             new_method(method_absolute, dp), new_method(method_absolute, qp)]
@@ -290,27 +292,35 @@ contains
         write (unit, "(a)") "label"//tab//"method"//tab//"kind"//tab//"epsilon[1]"//tab &
             //"min_distance_decade[1]"//tab//"collisions_there"//tab &
             //"min_distance_bisected[1]"//tab//"reference_limit[1]"
+        allocate (right_log(size(chosen)), k_right(size(chosen)), n_right(size(chosen)), &
+            reliable(size(chosen)))
+        ! each method searched on a thread of its own (OpenMP), the rows
+        ! written in order afterwards
+        !$omp parallel do schedule(dynamic, 1) default(shared) private(m, k, run, wrong_log)
         do m = 1, size(chosen)
-            k_right = 0
-            n_right = 0
+            k_right(m) = 0
+            n_right(m) = 0
             do k = 1, ref_limit
                 if (.not. right_at(chosen(m), -real(k, qp), run)) exit
-                k_right = k
-                n_right = run%n
+                k_right(m) = k
+                n_right(m) = run%n
             end do
-            right_log = -real(k_right, qp)
-            wrong_log = right_log - 1
-            reliable = k_right < ref_limit
-            if (k_right > 0 .and. reliable) then
+            right_log(m) = -real(k_right(m), qp)
+            wrong_log = right_log(m) - 1
+            reliable(m) = k_right(m) < ref_limit
+            if (k_right(m) > 0 .and. reliable(m)) then
                 tested = chosen(m)
-                call bisect(wrong_at, wrong_log, right_log, 0.0_qp, refine_steps)
+                call bisect(wrong_at, wrong_log, right_log(m), 0.0_qp, refine_steps)
             end if
+        end do
+        !$omp end parallel do
+        do m = 1, size(chosen)
             write (unit, "(a)") method_label(chosen(m))//tab//method_name(chosen(m))//tab &
                 //kind_name(chosen(m)%precision)//tab//str(method_setting(chosen(m)))//tab &
-                //str(merge(10.0_qp**(-real(k_right, qp)), nan, k_right > 0))//tab &
-                //itoa(n_right)//tab &
-                //str(merge(10.0_qp**right_log, nan, k_right > 0 .and. reliable))//tab &
-                //str(10.0_qp**(-ref_limit))
+                //str(merge(10.0_qp**(-real(k_right(m), qp)), nan, k_right(m) > 0))//tab &
+                //itoa(n_right(m))//tab &
+                //str(merge(10.0_qp**right_log(m), nan, k_right(m) > 0 .and. reliable(m))) &
+                //tab//str(10.0_qp**(-ref_limit))
         end do
         close (unit)
     end subroutine min_distance

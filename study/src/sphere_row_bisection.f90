@@ -4,13 +4,16 @@
 !> (`below` true at lo, false at hi): collapsed against finite runs, the sign
 !> of a discriminant, a right against a wrong collision sequence.
 !> `bisect_changes` finds every change of a many-valued label between two
-!> points, as far as midpoints separate them.
+!> points, as far as midpoints separate them. `bisect_ahead` takes the very
+!> steps of `bisect`, with the tests of the next steps made beforehand on the
+!> other OpenMP threads.
 module sphere_row_bisection
     use, intrinsic :: iso_fortran_env, only: int64
+    !$ use omp_lib, only: omp_get_max_threads, omp_in_parallel
     use sphere_row, only: qp
     implicit none
     private
-    public :: side_fn, class_fn, bisect, bisect_changes
+    public :: side_fn, class_fn, bisect, bisect_ahead, bisect_changes
 
     abstract interface
         !> Which side of the change x lies on: true on the side of lo.
@@ -53,6 +56,61 @@ contains
             end if
         end do
     end subroutine bisect
+
+    !> `bisect` with its next tests run side by side, one per OpenMP thread:
+    !> the midpoint, then the midpoints of the halves it may leave, level by
+    !> level, as many as there are threads. The walk down that tree takes
+    !> bisect's steps, so lo and hi end bit for bit where bisect leaves them,
+    !> on any number of threads; the tests off its path are thrown away.
+    !> Worth it where each test is long (a run of thousands of collisions);
+    !> `below` must be safe to call on several threads at once. Called on a
+    !> thread of a parallel region, it is bisect (no threads to spare).
+    subroutine bisect_ahead(below, lo, hi, width, max_steps)
+        procedure(side_fn) :: below
+        real(qp), intent(inout) :: lo, hi
+        real(qp), intent(in) :: width
+        integer, intent(in) :: max_steps
+        real(qp), allocatable :: a(:), b(:), mid(:)
+        logical, allocatable :: tested(:), side(:)
+        integer :: nodes, k, step
+        nodes = 1
+        !$ if (.not. omp_in_parallel()) nodes = max(1, omp_get_max_threads())
+        ! node k brackets [a(k), b(k)]; node 2k is the half above its midpoint
+        ! (left when below() holds there), node 2k+1 the half below it
+        allocate (a(nodes), b(nodes), mid(nodes), tested(nodes), side(nodes))
+        step = 0
+        do
+            a(1) = lo
+            b(1) = hi
+            do k = 1, nodes
+                if (k > 1) then
+                    tested(k) = tested(k/2)
+                    if (.not. tested(k)) cycle
+                    a(k) = merge(mid(k/2), a(k/2), mod(k, 2) == 0)
+                    b(k) = merge(b(k/2), mid(k/2), mod(k, 2) == 0)
+                end if
+                mid(k) = 0.5_qp*(a(k) + b(k))
+                tested(k) = b(k) - a(k) > width .and. mid(k) > a(k) .and. mid(k) < b(k)
+            end do
+            !$omp parallel do schedule(dynamic, 1) default(shared) private(k) if (nodes > 1)
+            do k = 1, nodes
+                if (tested(k)) side(k) = below(mid(k))
+            end do
+            !$omp end parallel do
+            k = 1
+            do while (k <= nodes)
+                if (step >= max_steps .or. .not. tested(k)) return
+                step = step + 1
+                if (side(k)) then
+                    lo = mid(k)
+                    k = 2*k
+                else
+                    hi = mid(k)
+                    k = 2*k + 1
+                end if
+            end do
+        end do
+    end subroutine bisect_ahead
 
     !> Every change of class(e) between a < b (classes ca /= cb), bisected
     !> until the bracket is at most `resolution` wide; the bracket midpoints

@@ -12,7 +12,7 @@ module sphere_row_c2_tables
         sorted_quantile, cubic_law_applies, cubic_law_mean, cubic_law_sd, &
         cubic_law_quantile, cubic_law_cdf, cubic_law_density, cubic_law_v4, single_impact_bound, &
         cubic_law_ks_distance
-    use sphere_row_tables, only: tab, row_t
+    use sphere_row_tables, only: tab, row_t, write_rows
     use sphere_row_error, only: error_t, fatal_error, error_io
     implicit none
     private
@@ -127,9 +127,10 @@ contains
         type(run_t) :: run
         integer, allocatable :: picks(:)
         real(qp), allocatable :: diff(:)
-        integer :: stride, i, k
+        integer :: stride, i, k, i_min, i_max
         stride = max(1, c%n/closed_form_reruns)
-        picks = [(i, i=stride, c%n, stride), minloc(c%e(:c%n), 1), maxloc(c%e(:c%n), 1)]
+        call extreme_places(c%e(:c%n), i_min, i_max)
+        picks = [(i, i=stride, c%n, stride), i_min, i_max]
         ! -1 marks a sample outside the region, not re-run
         allocate (diff(size(picks)), source=-1.0_qp)
         !$omp parallel do schedule(dynamic, 8) default(shared) private(k, trial, run)
@@ -144,6 +145,35 @@ contains
         c%reruns = count(diff >= 0.0_qp)
         c%max_diff = max(0.0_qp, maxval(diff))
     end subroutine rerun_closed_form
+
+    !> The places of the smallest and the largest of x, the first of each as
+    !> minloc and maxloc give them: each chunk's on an OpenMP thread, the
+    !> chunks' joined in chunk order (a later chunk wins only with a strictly
+    !> smaller or larger value), so the same places on any number of threads.
+    subroutine extreme_places(x, i_min, i_max)
+        real(dp), intent(in) :: x(:)
+        integer, intent(out) :: i_min, i_max
+        !> Values per chunk.
+        integer, parameter :: chunk = 65536
+        integer, allocatable :: at_min(:), at_max(:)
+        integer :: j, chunks, before, last
+        chunks = max(1, (size(x) - 1)/chunk + 1)
+        allocate (at_min(chunks), at_max(chunks))
+        !$omp parallel do schedule(static) default(shared) private(j, before, last)
+        do j = 1, chunks
+            before = (j - 1)*chunk
+            last = min(size(x), before + chunk)
+            at_min(j) = before + minloc(x(before + 1:last), 1)
+            at_max(j) = before + maxloc(x(before + 1:last), 1)
+        end do
+        !$omp end parallel do
+        i_min = at_min(1)
+        i_max = at_max(1)
+        do j = 2, chunks
+            if (x(at_min(j)) < x(i_min)) i_min = at_min(j)
+            if (x(at_max(j)) > x(i_max)) i_max = at_max(j)
+        end do
+    end subroutine extreme_places
 
     !> The stored v4 of every (n/closed_form_checks)-th sample of the main
     !> sample inside the region against the closed form: `c%checks` samples
@@ -181,17 +211,21 @@ contains
     !> How many of the doubles x lie below the real(16) number b, compared in
     !> double: with b_d the double nearest b, x < b if and only if x < b_d
     !> where b_d >= b, and x <= b_d where b_d < b (no double lies between b
-    !> and b_d).
-    pure integer function count_below(x, b) result(below)
+    !> and b_d). Counted on the OpenMP threads (a sum of integers).
+    integer function count_below(x, b) result(below)
         real(dp), intent(in) :: x(:)
         real(qp), intent(in) :: b
         real(dp) :: b_d
+        logical :: or_equal
+        integer :: i
         b_d = real(b, dp)
-        if (real(b_d, qp) >= b) then
-            below = count(x < b_d)
-        else
-            below = count(x <= b_d)
-        end if
+        or_equal = real(b_d, qp) < b
+        below = 0
+        !$omp parallel do schedule(static) default(shared) private(i) reduction(+: below)
+        do i = 1, size(x)
+            if (x(i) < b_d .or. (or_equal .and. x(i) == b_d)) below = below + 1
+        end do
+        !$omp end parallel do
     end function count_below
 
     !> Open every table first, so that a directory that cannot be written is
@@ -403,9 +437,7 @@ contains
             end if
         end do
         !$omp end parallel do
-        do j = 1, size(rows)
-            write (unit, "(a)") rows(j)%text
-        end do
+        call write_rows(unit, rows)
     end subroutine write_ecdf
 
     !> The ranks of the rows of c2_ecdf.tsv for a sample of n: every k-th
@@ -439,13 +471,14 @@ contains
 
     !> c2_histogram.tsv: `bins` equal bins from the smallest to the largest v4
     !> of the main sample, with the exact density and the normal density of the
-    !> sample's mean and deviation at each centre.
+    !> sample's mean and deviation at each centre. The rows are formatted on
+    !> the OpenMP threads (see row_t) and written in order.
     subroutine write_histogram(c, unit)
         type(c2_sample_t), intent(in) :: c
         integer, intent(in) :: unit
         integer, allocatable :: hits(:)
+        type(row_t), allocatable :: rows(:)
         real(dp) :: low, width, centre, density
-        character(len=:), allocatable :: exact_text
         integer :: i, j
         allocate (hits(c%bins), source=0)
         low = c%work(1)
@@ -460,28 +493,39 @@ contains
         !$omp end parallel do
         write (unit, "(a)") "v4_centre[V]"//tab//"count[1]"//tab//"density[1/V]"//tab &
             //"exact_density[1/V]"//tab//"normal_density[1/V]"
+        allocate (rows(c%bins))
+        !$omp parallel do schedule(static) default(shared) private(j, centre, density)
         do j = 1, c%bins
             centre = low + (j - 0.5_dp)*width
             density = real(hits(j), dp)/(real(c%n, dp)*width)
-            exact_text = "-"
-            if (c%exact) exact_text = dstr(cubic_law_density(centre, c%mean, c%sd, c%v0))
-            write (unit, "(a)") dstr(centre)//tab//itoa(hits(j))//tab//dstr(density)//tab &
-                //exact_text//tab//dstr(normal_density(centre, real(c%v_mean, qp), &
-                real(c%v_sd, qp)))
+            call rows(j)%add(real(centre, qp), dp_digits)
+            call rows(j)%add(hits(j))
+            call rows(j)%add(real(density, qp), dp_digits)
+            if (c%exact) then
+                call rows(j)%add(real(cubic_law_density(centre, c%mean, c%sd, c%v0), qp), &
+                    dp_digits)
+            else
+                call rows(j)%add("-")
+            end if
+            call rows(j)%add(real(normal_density(centre, real(c%v_mean, qp), &
+                real(c%v_sd, qp)), qp), dp_digits)
         end do
+        !$omp end parallel do
+        call write_rows(unit, rows)
     end subroutine write_histogram
 
     !> c2_convergence.tsv: the statistics of the prefixes N = 10^2, 10^3, ...
     !> (and n and nmax) of the stream; the row N = n is the main sample's.
-    !> `work` is reused for each sorted prefix, so this table is written last.
+    !> The prefixes shorter than n are taken at once, each by one OpenMP
+    !> thread into a buffer of its own; the longer ones one after the other,
+    !> each on every thread, in `work`, so this table is written last.
     subroutine write_convergence(c, unit)
         type(c2_sample_t), intent(inout) :: c
         integer, intent(in) :: unit
         integer, allocatable :: sizes(:)
         integer :: j, m
-        real(dp) :: p_mean, p_sd
+        real(dp), allocatable :: p_mean(:), p_sd(:), p_q025(:), p_q975(:), sorted(:)
         real(qp) :: p_half, m_exact
-        real(dp) :: p_q025, p_q975
         character(len=:), allocatable :: exact_text
         write (unit, "(a)") "n[1]"//tab//"mean[V]"//tab//"sd[V]"//tab//"ci_half_width[V]" &
             //tab//"half_width_sqrt_n[V]"//tab//"q025[V]"//tab//"q975[V]"//tab &
@@ -496,27 +540,45 @@ contains
         ! n and nmax put in their places among the ascending powers, once each
         sizes = [pack(sizes, sizes < c%n), c%n, pack(sizes, sizes > c%n)]
         sizes = [pack(sizes, sizes < c%nmax), c%nmax, pack(sizes, sizes > c%nmax)]
-        m_exact = cubic_law_mean(c%mean, c%sd, c%v0)
+        allocate (p_mean(size(sizes)), p_sd(size(sizes)), p_q025(size(sizes)), &
+            p_q975(size(sizes)))
+        ! the longest first; the sorts and sums inside run on this thread alone
+        !$omp parallel do schedule(dynamic, 1) default(shared) private(j, m, sorted)
+        do j = size(sizes), 1, -1
+            m = sizes(j)
+            if (m >= c%n) cycle
+            allocate (sorted(m))
+            call sample_moments(c%v4(:m), p_mean(j), p_sd(j))
+            call sort_values(sorted, c%v4(:m))
+            p_q025(j) = sorted_quantile(sorted, 0.025_dp)
+            p_q975(j) = sorted_quantile(sorted, 0.975_dp)
+            deallocate (sorted)
+        end do
+        !$omp end parallel do
         do j = 1, size(sizes)
             m = sizes(j)
             if (m == c%n) then
                 ! the main sample is this very prefix: its statistics are known
-                p_mean = c%v_mean
-                p_sd = c%v_sd
-                p_q025 = c%q025
-                p_q975 = c%q975
-            else
-                call sample_moments(c%v4(:m), p_mean, p_sd)
+                p_mean(j) = c%v_mean
+                p_sd(j) = c%v_sd
+                p_q025(j) = c%q025
+                p_q975(j) = c%q975
+            else if (m > c%n) then
+                call sample_moments(c%v4(:m), p_mean(j), p_sd(j))
                 call sort_prefix(c, m)
-                p_q025 = sorted_quantile(c%work(:m), 0.025_dp)
-                p_q975 = sorted_quantile(c%work(:m), 0.975_dp)
+                p_q025(j) = sorted_quantile(c%work(:m), 0.025_dp)
+                p_q975(j) = sorted_quantile(c%work(:m), 0.975_dp)
             end if
-            p_half = mean_ci_half_width(real(p_sd, qp), m, confidence)
+        end do
+        m_exact = cubic_law_mean(c%mean, c%sd, c%v0)
+        do j = 1, size(sizes)
+            m = sizes(j)
+            p_half = mean_ci_half_width(real(p_sd(j), qp), m, confidence)
             exact_text = "-"
-            if (c%exact) exact_text = str(p_mean - m_exact)
-            write (unit, "(a)") itoa(m)//tab//dstr(p_mean)//tab//dstr(p_sd)//tab//str(p_half) &
-                //tab//str(p_half*sqrt(real(m, qp)))//tab//dstr(p_q025)//tab//dstr(p_q975) &
-                //tab//exact_text
+            if (c%exact) exact_text = str(p_mean(j) - m_exact)
+            write (unit, "(a)") itoa(m)//tab//dstr(p_mean(j))//tab//dstr(p_sd(j))//tab &
+                //str(p_half)//tab//str(p_half*sqrt(real(m, qp)))//tab//dstr(p_q025(j))//tab &
+                //dstr(p_q975(j))//tab//exact_text
         end do
     end subroutine write_convergence
 

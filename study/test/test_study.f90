@@ -5,11 +5,12 @@ module test_study
         status_normal
     use sphere_row_analysis, only: sequence_of, sequence_hash, sequence_text, tail_period, &
         rate_map, cubic_discriminant, critical_restitution, sequence_polynomials, poly_eval
-    use sphere_row_bisection, only: bisect_changes
+    use sphere_row_bisection, only: bisect, bisect_ahead, bisect_changes
+    !$ use omp_lib, only: omp_set_num_threads, omp_get_max_threads
     use sphere_row_secant, only: secant, secant_result_t, secant_converged, secant_flat, &
         secant_left_interval, secant_invalid
     use sphere_row, only: itoa, status_word, status_collapsed, real_str
-    use sphere_row_tables, only: row_t, tab
+    use sphere_row_tables, only: row_t, tab, write_rows
     use testsuite, only: error_t, unittest_t, new_unittest, check
     implicit none
     private
@@ -33,6 +34,8 @@ contains
             new_unittest("secant_bad_start", test_secant_bad_start), &
             new_unittest("bisect_staircase", test_bisect_staircase), &
             new_unittest("bisect_change_of_n", test_bisect_n), &
+            new_unittest("bisect_ahead_takes_bisects_steps", test_bisect_ahead), &
+            new_unittest("write_rows_same_bytes", test_write_rows), &
             new_unittest("critical_restitution_4", test_critical), &
             new_unittest("tail_period", test_tail_period), &
             new_unittest("sequence_polynomials", test_polynomials), &
@@ -166,6 +169,95 @@ contains
                 //str(b(k)))
         end do
     end subroutine test_bisect_staircase
+
+    !> bisect_ahead on 1 to 4 threads leaves lo and hi bit for bit where
+    !> bisect does: for a single change, for a test that changes side many
+    !> times (the path, not the answer, decides), with a width that stops
+    !> it early, and with few steps allowed.
+    subroutine test_bisect_ahead(error)
+        type(error_t), allocatable, intent(out) :: error
+        real(qp), parameter :: widths(3) = [0.0_qp, 1.0e-12_qp, 0.01_qp]
+        integer, parameter :: steps(3) = [1, 7, 300]
+        real(qp) :: lo, hi, lo_ahead, hi_ahead
+        character(len=:), allocatable :: first_bad
+        integer :: threads, t, w, s, f
+        first_bad = ""
+        threads = 1
+        !$ threads = omp_get_max_threads()
+        do t = 1, 4
+            !$ call omp_set_num_threads(t)
+            do f = 1, 2
+                do w = 1, size(widths)
+                    do s = 1, size(steps)
+                        lo = 0.05_qp
+                        hi = 0.95_qp
+                        lo_ahead = lo
+                        hi_ahead = hi
+                        if (f == 1) then
+                            call bisect(below_root, lo, hi, widths(w), steps(s))
+                            call bisect_ahead(below_root, lo_ahead, hi_ahead, widths(w), steps(s))
+                        else
+                            call bisect(below_ragged, lo, hi, widths(w), steps(s))
+                            call bisect_ahead(below_ragged, lo_ahead, hi_ahead, widths(w), &
+                                steps(s))
+                        end if
+                        if (len(first_bad) == 0 .and. (lo_ahead /= lo .or. hi_ahead /= hi)) then
+                            first_bad = "threads "//itoa(t)//", test "//itoa(f)//", width " &
+                                //str(widths(w))//", steps "//itoa(steps(s))//": [" &
+                                //str(lo_ahead)//", "//str(hi_ahead)//"], bisect [" &
+                                //str(lo)//", "//str(hi)//"]"
+                        end if
+                    end do
+                end do
+            end do
+        end do
+        !$ call omp_set_num_threads(threads)
+        call check(error, len(first_bad) == 0, first_bad)
+    end subroutine test_bisect_ahead
+
+    !> One change, at 1/3.
+    pure logical function below_root(x)
+        real(qp), intent(in) :: x
+        below_root = x < 1.0_qp/3.0_qp
+    end function below_root
+
+    !> Changes side wherever the 10^4 x's integer part changes parity.
+    pure logical function below_ragged(x)
+        real(qp), intent(in) :: x
+        below_ragged = mod(int(1.0e4_qp*x), 2) == 0
+    end function below_ragged
+
+    !> write_rows writes the bytes of one write per row, for no rows, one,
+    !> a block of them and a block and a bit (rows of different lengths).
+    subroutine test_write_rows(error)
+        type(error_t), allocatable, intent(out) :: error
+        character(len=*), parameter :: path = "build/test-write-rows"
+        integer, parameter :: counts(4) = [0, 1, 64, 130]
+        type(row_t), allocatable :: rows(:)
+        integer :: unit, c, i, status
+        do c = 1, size(counts)
+            allocate (rows(counts(c)))
+            do i = 1, counts(c)
+                call rows(i)%add(i)
+                call rows(i)%add(repeat("x", mod(7*i, 23)))
+            end do
+            open (newunit=unit, file=path//".a", status="replace", action="write")
+            write (unit, "(a)") "head"
+            call write_rows(unit, rows)
+            close (unit)
+            open (newunit=unit, file=path//".b", status="replace", action="write")
+            write (unit, "(a)") "head"
+            do i = 1, counts(c)
+                write (unit, "(a)") rows(i)%text
+            end do
+            close (unit)
+            call execute_command_line("cmp -s "//path//".a "//path//".b", exitstat=status)
+            call check(error, status == 0, itoa(counts(c))//" rows: the files differ")
+            deallocate (rows)
+            if (allocated(error)) exit
+        end do
+        call execute_command_line("rm -f "//path//".a "//path//".b")
+    end subroutine test_write_rows
 
     function n_class(e) result(class)
         real(qp), intent(in) :: e
