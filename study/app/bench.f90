@@ -256,6 +256,14 @@ contains
                 " s and "//real_str(tb, 3)//" s; "//itoa(cores())//" processors online; " &
                 //trim(sweeps(k)%note)
         end do
+        ! two processes that share nothing, started together: what the
+        ! machine's second processor gives when no thread waits for another
+        call in_turn(one//bin//"/c12-c2 out="//runs, "("//one//bin//"/c12-c2 out="//runs// &
+            "/a & "//one//bin//"/c12-c2 out="//runs//"/b; wait)", ta, tb, ratio)
+        write (unit, "(a)") "machine.two_copies_speedup"//tab//real_str(2*ratio, 3)//tab//"1" &
+            //tab//"2 wall(one c12-c2 on one thread alone)/wall(two of them at once), median " &
+            //"pair by pair, "//real_str(ta, 3)//" s and "//real_str(tb, 3)//" s: the most " &
+            //"two threads can gain here, the ceiling of the openmp rows"
     end subroutine side_by_side
 
     !> The value of row `key` of an answer table, copied as a row of
