@@ -77,7 +77,7 @@ METHODS := $(RESULTS)/methods_work_precision.tsv $(RESULTS)/methods_stability.ts
       $(RESULTS)/methods_min_distance.tsv $(RESULTS)/methods_costs.tsv \
       $(RESULTS)/methods_platform.tsv
 COLLAPSE := $(RESULTS)/collapse_survey.tsv $(RESULTS)/collapse_by_p.tsv \
-      $(RESULTS)/collapse_answers.tsv
+      $(RESULTS)/collapse_answers.tsv $(RESULTS)/collapse_unanswered.tsv
 ECRIT := $(RESULTS)/ecrit.tsv $(RESULTS)/ecrit_answers.tsv
 # machine-dependent timings (like bench.tsv): not compared by check-results
 COST := $(RESULTS)/cost.tsv $(RESULTS)/cost_summary.tsv

@@ -2,13 +2,15 @@
 !> sphere_row_survey for their distribution), each run to its end with the
 !> closed-form collapse limits, and the first of them once more with the
 !> fallback rule alone; how many end with an answer, how many collisions
-!> that takes, and whether every invariant holds.
+!> that takes, and whether every invariant holds; and each row left
+!> unanswered, with the command line that runs it again.
 program c12_collapse
     use, intrinsic :: iso_fortran_env, only: int64
     use sphere_row, only: qp, scene_t, run_t, simulate, str, itoa, status_max_collisions
     use sphere_row_survey, only: survey_t, survey_open, survey_close, survey_scene, &
         check_invariants
-    use sphere_row_tables, only: open_table, write_answer, answer_header, tab
+    use sphere_row_tables, only: open_table, write_answer, answer_header, tab, row_t, &
+        write_rows
     use sphere_row_study_cli, only: cli_t, start_program, read_keys, stop_unless_normal
     implicit none
     character(len=*), parameter :: nl = new_line("a")
@@ -20,17 +22,31 @@ program c12_collapse
     type(survey_t) :: survey
     character(len=:), allocatable :: out
     integer :: n, n_before, cap, seed, p_max
-    ! per rule: scenes, answered, invariant failures, collisions and cpu
+    !> What one run leaves for the tables.
+    type :: outcome_t
+        logical :: answered = .false., broken = .false.
+        integer(int64) :: n = 0
+        real :: seconds = 0
+    end type outcome_t
+    ! per rule: scenes, answered, invariant failures, collisions and seconds
     integer :: scenes(2), answered(2), broken(2)
     integer(int64) :: collisions(2)
-    real :: cpu_max(2), cpu_sum(2)
+    !> Wall seconds of the slowest run and of all runs, per rule (each run
+    !> timed on its own thread).
+    real :: seconds_max(2), seconds_sum(2)
     ! per p, closed-form rule: scenes and answered
     integer, allocatable :: by_p(:, :)
+    ! rows of collapse_unanswered.tsv, one per unanswered row (closed-form rule)
+    type(row_t), allocatable :: unanswered(:)
+    !> Of the unanswered rows (closed-form rule): those of equal masses, and
+    !> those whose largest mass is 10^4 times the smallest or more.
+    integer :: unanswered_equal = 0, unanswered_far = 0
 
     call start_program(cli, "c12-collapse", &
         "Collapse in general rows: random rows run to their end with closed-form"//nl// &
         "collapse limits, and the first n_before of them with the fallback rule alone."//nl// &
-        "Writes OUT/collapse_survey.tsv, OUT/collapse_by_p.tsv, OUT/collapse_answers.tsv.")
+        "Writes OUT/collapse_survey.tsv, OUT/collapse_by_p.tsv, OUT/collapse_answers.tsv"//nl// &
+        "and OUT/collapse_unanswered.tsv.")
     call cli%add_int("n", "1000", "random rows run with closed-form limits", lo=1)
     call cli%add_int("n_before", "300", "of these, rows run with the fallback rule alone", lo=0)
     call cli%add_int("cap", "10000", "collisions after which a run counts as unanswered", lo=1)
@@ -49,50 +65,83 @@ program c12_collapse
 
 contains
 
-    !> Draw the rows and run each under the rules.
+    !> Draw the rows (one stream, in order), run each under the rules on the
+    !> OpenMP threads, then count the outcomes in row order.
     subroutine run_survey()
+        type(scene_t), allocatable :: rows(:)
+        type(outcome_t), allocatable :: outcome(:, :)
         type(scene_t) :: scene
-        integer :: i
+        integer :: i, job, rule
         allocate (by_p(2, 2:p_max), source=0)
+        allocate (unanswered(0), rows(n), outcome(2, n))
         scenes = 0
         answered = 0
         broken = 0
         collisions = 0
-        cpu_max = 0
-        cpu_sum = 0
+        seconds_max = 0
+        seconds_sum = 0
         call survey_open(survey, seed, 2, p_max, 1.0e3_qp)
         do i = 1, n
-            call survey_scene(survey, scene)
-            scene%max_collisions = cap
-            call one_run(scene, closed)
-            if (i > n_before) cycle
-            scene%closed_form_limits = .false.
-            call one_run(scene, fallback)
+            call survey_scene(survey, rows(i))
+            rows(i)%max_collisions = cap
         end do
         call survey_close(survey)
+        ! jobs 1..n: the rows with closed-form limits; n+1..n+n_before: the
+        ! first rows again with the fallback rule alone
+        !$omp parallel do schedule(dynamic, 1) default(shared) private(job, i, rule, scene)
+        do job = 1, n + n_before
+            rule = merge(closed, fallback, job <= n)
+            i = merge(job, job - n, job <= n)
+            scene = rows(i)
+            scene%closed_form_limits = rule == closed
+            call one_run(scene, outcome(rule, i))
+        end do
+        !$omp end parallel do
+        do i = 1, n
+            call tally(rows(i), closed, outcome(closed, i), i)
+            if (i <= n_before) call tally(rows(i), fallback, outcome(fallback, i), i)
+        end do
     end subroutine run_survey
 
-    !> Run one row under one rule and count its outcome.
-    subroutine one_run(scene, rule)
+    !> Run one row and keep what the tables need of it.
+    subroutine one_run(scene, outcome)
         type(scene_t), intent(in) :: scene
-        integer, intent(in) :: rule
+        type(outcome_t), intent(out) :: outcome
         type(run_t) :: run
         character(len=:), allocatable :: why
-        real :: t0, t1
-        call cpu_time(t0)
+        integer(int64) :: c0, c1, rate
+        call system_clock(c0, rate)
         call simulate(scene, run)
-        call cpu_time(t1)
-        scenes(rule) = scenes(rule) + 1
-        cpu_max(rule) = max(cpu_max(rule), t1 - t0)
-        cpu_sum(rule) = cpu_sum(rule) + (t1 - t0)
-        if (rule == closed) by_p(1, scene%p) = by_p(1, scene%p) + 1
-        if (run%status == status_max_collisions) return
-        answered(rule) = answered(rule) + 1
-        collisions(rule) = collisions(rule) + run%n
-        if (rule == closed) by_p(2, scene%p) = by_p(2, scene%p) + 1
+        call system_clock(c1)
+        outcome%seconds = real(c1 - c0)/real(rate)
+        outcome%answered = run%status /= status_max_collisions
+        outcome%n = run%n
+        if (.not. outcome%answered) return
         call check_invariants(scene, run, slack, why)
-        if (why /= "") broken(rule) = broken(rule) + 1
+        outcome%broken = why /= ""
     end subroutine one_run
+
+    !> Count the outcome of row `index` under one rule.
+    subroutine tally(scene, rule, outcome, index)
+        type(scene_t), intent(in) :: scene
+        integer, intent(in) :: rule, index
+        type(outcome_t), intent(in) :: outcome
+        scenes(rule) = scenes(rule) + 1
+        seconds_max(rule) = max(seconds_max(rule), outcome%seconds)
+        seconds_sum(rule) = seconds_sum(rule) + outcome%seconds
+        if (rule == closed) by_p(1, scene%p) = by_p(1, scene%p) + 1
+        if (.not. outcome%answered) then
+            if (rule /= closed) return
+            unanswered = [unanswered, unanswered_row(scene, index)]
+            if (all(scene%m == scene%m(1))) unanswered_equal = unanswered_equal + 1
+            if (maxval(scene%m) >= 1.0e4_qp*minval(scene%m)) unanswered_far = unanswered_far + 1
+            return
+        end if
+        answered(rule) = answered(rule) + 1
+        collisions(rule) = collisions(rule) + outcome%n
+        if (rule == closed) by_p(2, scene%p) = by_p(2, scene%p) + 1
+        if (outcome%broken) broken(rule) = broken(rule) + 1
+    end subroutine tally
 
     !> The survey table, the table per row length and the answers.
     subroutine write_tables()
@@ -101,13 +150,13 @@ contains
         character(len=300) :: msg
         call open_table(out, "collapse_survey.tsv", "rule"//tab//"scenes"//tab//"answered"// &
             tab//"unanswered"//tab//"invariant_failures"//tab//"mean_collisions"//tab// &
-            "cpu_max[s]"//tab//"cpu_total[s]", unit, stat, msg)
+            "run_max[s]"//tab//"run_total[s]", unit, stat, msg)
         call stop_unless_normal(stat, msg)
         do rule = closed, fallback
             write (unit, "(a)") trim(names(rule))//tab//itoa(scenes(rule))//tab// &
                 itoa(answered(rule))//tab//itoa(scenes(rule) - answered(rule))//tab// &
                 itoa(broken(rule))//tab//str(mean_collisions(rule))//tab// &
-                str(real(cpu_max(rule), qp))//tab//str(real(cpu_sum(rule), qp))
+                str(real(seconds_max(rule), qp))//tab//str(real(seconds_sum(rule), qp))
         end do
         close (unit)
         call open_table(out, "collapse_by_p.tsv", "p"//tab//"scenes"//tab//"answered"//tab// &
@@ -119,6 +168,11 @@ contains
                 str(real(by_p(2, p), qp)/by_p(1, p))
         end do
         close (unit)
+        call open_table(out, "collapse_unanswered.tsv", "row"//tab//"p"//tab//"e[1]"//tab// &
+            "mass_ratio[1]"//tab//"closed_gaps"//tab//"command", unit, stat, msg)
+        call stop_unless_normal(stat, msg)
+        call write_rows(unit, unanswered)
+        close (unit)
         call open_table(out, "collapse_answers.tsv", answer_header, unit, stat, msg)
         call stop_unless_normal(stat, msg)
         call write_answer(unit, "collapse.answered", itoa(answered(closed)), "scenes", &
@@ -128,11 +182,44 @@ contains
         call write_answer(unit, "collapse.answered_before", itoa(answered(fallback)), &
             "scenes", itoa(scenes(fallback)), itoa(answered(fallback) - scenes(fallback)), &
             "the first "//itoa(scenes(fallback))//" of them with the fallback rule alone")
+        call write_answer(unit, "collapse.unanswered_equal_masses", itoa(unanswered_equal), &
+            "unanswered", itoa(size(unanswered)), itoa(unanswered_equal - size(unanswered)), &
+            "unanswered rows of equal masses (collapse_unanswered.tsv)")
+        call write_answer(unit, "collapse.unanswered_mass_ratio_1e4", itoa(unanswered_far), &
+            "unanswered", itoa(size(unanswered)), itoa(unanswered_far - size(unanswered)), &
+            "unanswered rows whose largest mass is 10^4 times the smallest or more")
         call write_answer(unit, "collapse.invariant_failures", itoa(broken(closed)), &
             "expected", "0", itoa(broken(closed)), "runs that ended with momentum, energy, "// &
             "a gap or a closing pair outside "//str(slack)//" epsilon of their scales")
         close (unit)
     end subroutine write_tables
+
+    !> The row of collapse_unanswered.tsv of row `index` of the survey: its
+    !> length, restitution, largest mass over smallest, gaps that start
+    !> closed, and the sphere-row command that runs it.
+    type(row_t) function unanswered_row(scene, index) result(row)
+        type(scene_t), intent(in) :: scene
+        integer, intent(in) :: index
+        character(len=:), allocatable :: command
+        integer :: i
+        call row%add(index)
+        call row%add(scene%p)
+        call row%add(scene%e)
+        call row%add(maxval(scene%m)/minval(scene%m))
+        call row%add(count(scene%a == 0))
+        command = "sphere-row p="//itoa(scene%p)//" e="//str(scene%e)
+        if (any(scene%m /= 1)) then
+            command = command//" masses="//str(scene%m(1))
+            do i = 2, scene%p
+                command = command//","//str(scene%m(i))
+            end do
+        end if
+        command = command//" gaps="//str(scene%a(1))
+        do i = 2, scene%p - 1
+            command = command//","//str(scene%a(i))
+        end do
+        call row%add(command//" max_collisions="//itoa(cap))
+    end function unanswered_row
 
     !> Mean collisions of the answered runs of a rule (0 if none).
     real(qp) function mean_collisions(rule)

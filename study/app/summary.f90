@@ -134,7 +134,11 @@ contains
             "recognises yet (a touching cascade whose merge neither the box nor a pattern "// &
             "of every contact proves, as when a light sphere shuttles between heavy ones "// &
             "while the rest waits; open-gap collapses that repeat no pattern), which the "// &
-            "fallback ends only slowly.")
+            "fallback ends only slowly. Of the rows left unanswered "// &
+            "(collapse_unanswered.tsv, each with the command that runs it again), "// &
+            field("collapse", "collapse.unanswered_mass_ratio_1e4")//" have a largest mass "// &
+            "10^4 times the smallest or more and "// &
+            field("collapse", "collapse.unanswered_equal_masses")//" equal masses.")
         call section("ecrit", "e_crit(p): critical restitution of the struck row of p spheres", &
             [character(len=60) :: "ecrit"], &
             "For every p equal spheres (a = d = v0 = 1) a scan of e decides each run by the "// &
