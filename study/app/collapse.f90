@@ -8,7 +8,7 @@ program c12_collapse
     use, intrinsic :: iso_fortran_env, only: int64
     use sphere_row, only: qp, scene_t, run_t, simulate, str, itoa, status_max_collisions
     use sphere_row_survey, only: survey_t, survey_open, survey_close, survey_scene, &
-        check_invariants
+        check_invariants, scene_command
     use sphere_row_tables, only: open_table, write_answer, answer_header, tab, row_t, &
         write_rows
     use sphere_row_study_cli, only: cli_t, start_program, read_keys, stop_unless_normal
@@ -196,29 +196,16 @@ contains
 
     !> The row of collapse_unanswered.tsv of row `index` of the survey: its
     !> length, restitution, largest mass over smallest, gaps that start
-    !> closed, and the sphere-row command that runs it.
+    !> closed, and the sphere-row command that runs it (scene_command).
     type(row_t) function unanswered_row(scene, index) result(row)
         type(scene_t), intent(in) :: scene
         integer, intent(in) :: index
-        character(len=:), allocatable :: command
-        integer :: i
         call row%add(index)
         call row%add(scene%p)
         call row%add(scene%e)
         call row%add(maxval(scene%m)/minval(scene%m))
         call row%add(count(scene%a == 0))
-        command = "sphere-row p="//itoa(scene%p)//" e="//str(scene%e)
-        if (any(scene%m /= 1)) then
-            command = command//" masses="//str(scene%m(1))
-            do i = 2, scene%p
-                command = command//","//str(scene%m(i))
-            end do
-        end if
-        command = command//" gaps="//str(scene%a(1))
-        do i = 2, scene%p - 1
-            command = command//","//str(scene%a(i))
-        end do
-        call row%add(command//" max_collisions="//itoa(cap))
+        call row%add(scene_command(scene))
     end function unanswered_row
 
     !> Mean collisions of the answered runs of a rule (0 if none).

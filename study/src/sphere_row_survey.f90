@@ -10,12 +10,13 @@
 module sphere_row_survey
     use, intrinsic :: iso_c_binding, only: c_ptr, c_double, c_long
     use sphere_row, only: qp, scene_t, run_t, scene_init, simulate, momentum, &
-        kinetic_energy, status_normal, status_collapsed
+        kinetic_energy, status_normal, status_collapsed, short_text, itoa
     use sphere_row_gsl, only: gsl_rng_mt19937, gsl_rng_alloc, gsl_rng_set, &
         gsl_rng_uniform_pos, gsl_rng_free
     implicit none
     private
-    public :: survey_t, survey_open, survey_close, survey_scene, check_invariants
+    public :: survey_t, survey_open, survey_close, survey_scene, check_invariants, &
+        scene_command
 
     !> A stream of random scenes.
     type :: survey_t
@@ -102,5 +103,28 @@ contains
             why = "closing"
         end if
     end subroutine check_invariants
+
+    !> The sphere-row command that runs a survey row again: p, e, the masses
+    !> (unless all 1), the gaps and max_collisions, each number in the
+    !> shortest text that reads back as it, so the command gives the same
+    !> scene bit for bit. Not for a parallel region (a character function of
+    !> deferred length).
+    function scene_command(scene) result(command)
+        type(scene_t), intent(in) :: scene
+        character(len=:), allocatable :: command
+        integer :: i
+        command = "sphere-row p="//itoa(scene%p)//" e="//short_text(scene%e)
+        if (any(scene%m /= 1)) then
+            command = command//" masses="//short_text(scene%m(1))
+            do i = 2, scene%p
+                command = command//","//short_text(scene%m(i))
+            end do
+        end if
+        command = command//" gaps="//short_text(scene%a(1))
+        do i = 2, scene%p - 1
+            command = command//","//short_text(scene%a(i))
+        end do
+        command = command//" max_collisions="//itoa(scene%max_collisions)
+    end function scene_command
 
 end module sphere_row_survey

@@ -42,6 +42,8 @@ contains
             new_unittest("c2_one_and_two_threads_identical", test_threads), &
             new_unittest("c2_precision_key_refused", test_precision_key), &
             new_unittest("sweeps_one_and_two_threads_identical", test_sweep_threads), &
+            new_unittest("collapse_survey_one_and_two_threads_identical", &
+            test_collapse_threads), &
             new_unittest("b1_auto_tables_equal_qp", test_b1_auto) &
             ]
     end function collect_auto
@@ -318,6 +320,18 @@ contains
         call run_twice(error, dir, "c12-b1", "n_scan=201 critical=no", "c12-b2", &
             "n_grid=201", "OMP_NUM_THREADS=1 ", "OMP_NUM_THREADS=2 ", "", "", tables)
     end subroutine test_sweep_threads
+
+    !> c12-collapse on 1 and 2 threads counts the same rows (its rows run on
+    !> the threads): the same unanswered rows, answers and table per p (the
+    !> survey table has timings and is not compared).
+    subroutine test_collapse_threads(error)
+        type(error_t), allocatable, intent(out) :: error
+        character(len=*), parameter :: dir = "build/test-collapse-threads"
+        character(len=*), parameter :: tables(3) = [character(len=24) :: &
+            "collapse_unanswered.tsv", "collapse_answers.tsv", "collapse_by_p.tsv"]
+        call run_twice(error, dir, "c12-collapse", "n=120 n_before=40 cap=3000", "", "", &
+            "OMP_NUM_THREADS=1 ", "OMP_NUM_THREADS=2 ", "", "", tables)
+    end subroutine test_collapse_threads
 
     !> c12-b1 with precision=auto (real(8) where certified) and precision=qp
     !> writes the same scan, intervals and answers, byte for byte: the
