@@ -153,7 +153,7 @@ contains
 
     !> Step 3: the critical restitution by simulation alone, with a tolerance
     !> near the bottom of real128's range: bisect finite against collapsed.
-    !> Next steps' runs (16000 collisions each near e_crit) start ahead on other threads.
+    !> The next steps' runs (up to ~2 10^4 collisions near e_crit) run ahead on other threads.
     subroutine critical_by_simulation()
         !> Half-width of the bracket around e_quasi in which the simulation alone
         !> bisects collapsed against finite runs.

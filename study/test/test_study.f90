@@ -276,7 +276,7 @@ contains
         type(input_error_t), allocatable :: refused
         type(string_t), allocatable :: args(:)
         character(len=:), allocatable :: command
-        integer :: i, start, blank, k
+        integer :: i, start, blank
         call survey_open(survey, 12, 2, 20, 1.0e3_qp)
         do i = 1, 300
             call survey_scene(survey, drawn)
@@ -298,8 +298,7 @@ contains
             deallocate (args)
             call check(error, .not. allocated(refused), "row "//itoa(i)//": refused: "//command)
             if (allocated(error)) exit
-            k = drawn%p
-            call check(error, read_back%p == k .and. read_back%e == drawn%e .and. &
+            call check(error, read_back%p == drawn%p .and. read_back%e == drawn%e .and. &
                 all(read_back%m == drawn%m) .and. all(read_back%a == drawn%a) .and. &
                 read_back%max_collisions == drawn%max_collisions, &
                 "row "//itoa(i)//" reads back otherwise: "//command)
