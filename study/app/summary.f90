@@ -125,15 +125,17 @@ contains
             "collapse limits in closed form (a plastic cascade pooled at e = 0, a cascade "// &
             "through touching spheres proven to merge by an invariant box of its momentum "// &
             "ratios, or by its sequence in the engine's order at equal times settling into "// &
-            "a contracting pattern of every contact, a collision cycle certified to repeat "// &
+            "a contracting pattern of every contact (a shuttle of part of the block jumped "// &
+            "by powers of its period's map), a collision cycle certified to repeat "// &
             "for ever) and, for the first of "// &
             "them, with the fallback alone (every rate and gap of a group insignificant). "// &
             field("collapse", "collapse.answered")//" of "// &
             field("collapse", "collapse.answered", check_value)//" rows end within the "// &
             "collision cap (collapse_survey.tsv); the rest collapse in ways no certificate "// &
             "recognises yet (a touching cascade whose merge neither the box nor a pattern "// &
-            "of every contact proves, as when a light sphere shuttles between heavy ones "// &
-            "while the rest waits; open-gap collapses that repeat no pattern), which the "// &
+            "of every contact proves, as when patterns of parts of the block interleave "// &
+            "without repeating as a whole; open-gap collapses that repeat no pattern), "// &
+            "which the "// &
             "fallback ends only slowly. Of the rows left unanswered "// &
             "(collapse_unanswered.tsv, each with the command that runs it again), "// &
             field("collapse", "collapse.unanswered_mass_ratio_1e4")//" have a largest mass "// &

@@ -1,0 +1,510 @@
+!> The cascade at one instant through a touching block of spheres, run in the
+!> engine's order at equal times, and the numerical certificate that it merges.
+!>
+!> It only decides whether a block merges (the engine takes the limit in its
+!> own kind), so it is written once, in double precision, for every kind.
+!>
+!> The block's collisions are all at one time; a collision at contact c moves
+!> momentum through c alone. On the approach rates w (w_c > 0: closing) it
+!> turns w_c into -e w_c and adds kl_c w_c to w_(c-1) and kr_c w_c to
+!> w_(c+1), the kicks of (6). Which contact collides next is the engine's
+!> rule at equal times: the largest w_c > 0, the leftmost of equals.
+module sphere_row_cascade
+    use sphere_row_kinds, only: dp
+    implicit none
+    private
+    public :: ordered_cascade_merges, cascade_jump
+
+    !> A try: its collisions at least and its work (collisions times contacts)
+    !> at most, the sequence length at which a period is first looked for, and
+    !> the periods a certificate runs.
+    integer, parameter :: order_steps_least = 16384, order_work = 2**22, &
+        order_first_check = 1024, order_probes = 6
+    !> Part of the smallest decision margin that the remaining drift of the
+    !> direction may use up (as for the engine's certified cycles).
+    real(dp), parameter :: drift_safety = 1.0e-2_dp
+    !> Jumps over a pattern repeated by part of the block: its longest period,
+    !> its widest window of contacts, the most doublings of its repeat count,
+    !> the most distinct jumps (pattern and count) a try records, and the
+    !> whole periods a pattern runs before it is jumped (fewer: the search
+    !> costs more than it saves on the many short repeats; measured by the
+    !> collapse survey).
+    integer, parameter :: jump_period_most = 16, jump_window_most = 40, &
+        jump_levels = 30, jump_kinds_most = 256, jump_need = 8
+
+    !> A pattern of contacts repeated `times` times at once while the block's
+    !> other contacts wait.
+    type :: jump_t
+        integer :: length = 0, times = 0
+        integer :: contact(jump_period_most) = 0
+    end type jump_t
+
+    !> A block's kicks and restitution, and the jumps its sequence has taken:
+    !> entry -j of a sequence is jump j.
+    type :: cascade_t
+        real(dp), allocatable :: kl(:), kr(:)
+        real(dp) :: e = 0
+        integer :: jumps = 0
+        type(jump_t), allocatable :: jump(:)
+    end type cascade_t
+
+contains
+
+    !> Whether (`merges`) the cascade at one instant through a touching block
+    !> with approach rates `rates` and the kicks kl, kr of (6) at its contacts
+    !> settles into a pattern that takes in every contact, repeats for ever
+    !> and contracts the rates: then every sphere tends to the block's mean
+    !> velocity. For blocks whose merge the engine's box, which asks for a
+    !> merge in every order, does not prove (light spheres between heavy
+    !> ones, where some order splits the block).
+    !>
+    !> A pattern that only part of the block repeats (a light sphere shuttling
+    !> between two heavy ones while other contacts wait) repeats for as long
+    !> as its rates stay above the waiting ones, which, as its rates fall by a
+    !> factor 1 - O(m/M) per period, can be 10^5 periods and more. Once such a
+    !> pattern of at most jump_period_most contacts has run jump_need whole
+    !> periods, it is jumped: its map over one period, M (a product of the
+    !> collision matrices on the window of contacts it touches), is doubled
+    !> (M, M^2, M^4, ...) while the pattern still holds from M^(2^j) w, and the
+    !> count is then found bit by bit, so the rates after `times` periods
+    !> are M^times w, with the pattern still holding there and not one period
+    !> later. The sequence records the jump as one entry (its pattern and
+    !> count), so that a cascade that alternates such stretches with single
+    !> collisions shows its period in few entries. The sequence is searched
+    !> for a period after order_first_check, twice as many, ... entries, and
+    !> a period found is checked by pattern_contracts: a numerical
+    !> certificate. `steps` returns the work done, in collisions.
+    pure subroutine ordered_cascade_merges(kl, kr, rates, e, merges, steps)
+        real(dp), intent(in) :: kl(:), kr(:), rates(:), e
+        logical, intent(out) :: merges
+        integer, intent(out) :: steps
+        type(cascade_t) :: cs
+        real(dp) :: w(size(rates))
+        integer, allocatable :: seq(:)
+        integer :: agree(jump_period_most)
+        logical :: blocked(jump_period_most)
+        integer :: n, most, check, period, c, items, per, id, cost, st
+        merges = .false.
+        steps = 0
+        n = size(rates)
+        if (n < 2) return
+        if (.not. maxval(abs(rates)) > 0) return
+        most = max(order_steps_least, order_work/n)
+        allocate (seq(most), stat=st)
+        if (st /= 0) return
+        call cascade_start(cs, kl, kr, e, jump_kinds_most, st)
+        if (st /= 0) return
+        w = rates/maxval(abs(rates))
+        check = order_first_check
+        items = 0
+        agree = 0
+        blocked = .false.
+        do while (steps < most)
+            c = rule_choice(w)
+            ! no contact closes: the cascade ends, a finite one
+            if (c == 0) return
+            call cascade_collide(w, cs, c)
+            steps = steps + 1
+            items = items + 1
+            seq(items) = c
+            ! the rates fall by up to e per collision: kept about 1
+            if (mod(items, 8) == 0) w = w/maxval(abs(w))
+            call watch_repeats(seq(:items), agree, blocked, per)
+            if (per > 0) then
+                call jump_ahead(cs, w, seq(items - per + 1:items), id, cost)
+                steps = steps + cost
+                ! a part of the block that repeats its pattern for ever
+                if (id < 0) return
+                if (id == 0) then
+                    blocked(per) = .true.
+                else
+                    items = items + 1
+                    seq(items) = -id
+                    agree = 0
+                    blocked = .false.
+                    w = w/maxval(abs(w))
+                end if
+            end if
+            if (items < check) cycle
+            check = 2*check
+            call cascade_period(seq(items/2 + 1:items), period)
+            if (period == 0) cycle
+            call pattern_contracts(w, cs, seq(items - period + 1:items), merges)
+            if (merges) return
+        end do
+        ! the budget spent: a last look at the whole sequence
+        call cascade_period(seq(items/2 + 1:items), period)
+        if (period > 0) call pattern_contracts(w, cs, seq(items - period + 1:items), merges)
+    end subroutine ordered_cascade_merges
+
+    !> One jump of a pattern of contacts, as the ordered cascade takes it once
+    !> the pattern has run jump_need periods: the rates w become those after
+    !> `times` more periods, the most after which the pattern still holds for
+    !> one period (0: not taken; -1: it holds for 2^jump_levels periods).
+    pure subroutine cascade_jump(kl, kr, e, pattern, w, times)
+        real(dp), intent(in) :: kl(:), kr(:), e
+        integer, intent(in) :: pattern(:)
+        real(dp), intent(inout) :: w(:)
+        integer, intent(out) :: times
+        type(cascade_t) :: cs
+        integer :: id, cost, st
+        times = 0
+        if (size(pattern) > jump_period_most .or. size(w) < 1) return
+        if (any(pattern < 1 .or. pattern > size(w))) return
+        call cascade_start(cs, kl, kr, e, 1, st)
+        if (st /= 0) return
+        call jump_ahead(cs, w, pattern, id, cost)
+        times = min(id, 0)
+        if (id > 0) times = cs%jump(id)%times
+    end subroutine cascade_jump
+
+    !> A block's kicks and restitution, with room for `kinds` jumps (st /= 0:
+    !> no memory for them).
+    pure subroutine cascade_start(cs, kl, kr, e, kinds, st)
+        type(cascade_t), intent(out) :: cs
+        real(dp), intent(in) :: kl(:), kr(:), e
+        integer, intent(in) :: kinds
+        integer, intent(out) :: st
+        allocate (cs%kl(size(kl)), stat=st)
+        if (st /= 0) return
+        allocate (cs%kr(size(kr)), stat=st)
+        if (st /= 0) return
+        allocate (cs%jump(kinds), stat=st)
+        if (st /= 0) return
+        cs%kl = kl
+        cs%kr = kr
+        cs%e = e
+    end subroutine cascade_start
+
+    !> The contact that collides next by the engine's rule at equal times (the
+    !> largest closing rate, the leftmost of equals), 0 if none closes.
+    pure integer function rule_choice(w) result(c)
+        real(dp), intent(in) :: w(:)
+        real(dp) :: wc
+        integer :: j
+        c = 0
+        wc = 0
+        do j = 1, size(w)
+            if (w(j) > wc) then
+                wc = w(j)
+                c = j
+            end if
+        end do
+    end function rule_choice
+
+    !> By how much contact c is the rule's choice: its rate less the largest
+    !> other rate, and at most its rate itself (not positive: it is not).
+    pure real(dp) function choice_slack(w, c) result(slack)
+        real(dp), intent(in) :: w(:)
+        integer, intent(in) :: c
+        integer :: j
+        slack = w(c)
+        do j = 1, size(w)
+            if (j /= c) slack = min(slack, w(c) - w(j))
+        end do
+    end function choice_slack
+
+    !> A collision at contact c of the block, on its approach rates w.
+    pure subroutine cascade_collide(w, cs, c)
+        real(dp), intent(inout) :: w(:)
+        type(cascade_t), intent(in) :: cs
+        integer, intent(in) :: c
+        real(dp) :: wc
+        wc = w(c)
+        if (c > 1) w(c - 1) = w(c - 1) + cs%kl(c)*wc
+        if (c < size(w)) w(c + 1) = w(c + 1) + cs%kr(c)*wc
+        w(c) = -cs%e*wc
+    end subroutine cascade_collide
+
+    !> After the latest entry of seq: for each period k, how many entries in
+    !> a row have matched the entry k before (agree), and `per`, the shortest
+    !> period that has now run jump_need whole periods and has not been tried
+    !> since it last broke (blocked), 0 if none.
+    pure subroutine watch_repeats(seq, agree, blocked, per)
+        integer, intent(in) :: seq(:)
+        integer, intent(inout) :: agree(:)
+        logical, intent(inout) :: blocked(:)
+        integer, intent(out) :: per
+        integer :: k, l
+        per = 0
+        l = size(seq)
+        do k = 1, min(size(agree), l - 1)
+            if (seq(l) == seq(l - k)) then
+                agree(k) = agree(k) + 1
+            else
+                agree(k) = 0
+                blocked(k) = .false.
+            end if
+            if (per == 0 .and. agree(k) >= (jump_need - 1)*k .and. .not. blocked(k)) per = k
+        end do
+    end subroutine watch_repeats
+
+    !> Jump the pattern of contacts (which has just run jump_need periods) as many
+    !> whole periods ahead as it still holds: w becomes M^times w on the
+    !> window of contacts the pattern touches, and id the jump's entry in
+    !> cs%jump (0: not jumped, the pattern takes in every contact, its window
+    !> is too wide, it does not hold one period on, or the table is full; -1:
+    !> it holds for 2^jump_levels periods, i.e. it repeats for ever while the
+    !> rest of the block waits). `cost` is the work in collisions.
+    pure subroutine jump_ahead(cs, w, pattern, id, cost)
+        type(cascade_t), intent(inout) :: cs
+        real(dp), intent(inout) :: w(:)
+        integer, intent(in) :: pattern(:)
+        integer, intent(out) :: id, cost
+        real(dp), allocatable :: pw(:, :, :)
+        real(dp) :: x(size(w)), y(size(w)), slack
+        logical :: seen(size(w)), ok
+        integer :: a, b, nw, j, top, times, st
+        id = 0
+        cost = 1
+        seen = .false.
+        seen(pattern) = .true.
+        if (all(seen)) return
+        a = max(1, minval(pattern) - 1)
+        b = min(size(w), maxval(pattern) + 1)
+        nw = b - a + 1
+        if (nw > jump_window_most) return
+        allocate (pw(nw, nw, 0:jump_levels), stat=st)
+        if (st /= 0) return
+        call period_map(cs, pattern, a, b, pw(:, :, 0))
+        ! the largest 2^top periods after which the pattern still holds
+        top = -1
+        x = w
+        do j = 0, jump_levels
+            if (j > 0) pw(:, :, j) = matmul(pw(:, :, j - 1), pw(:, :, j - 1))
+            x(a:b) = matmul(pw(:, :, j), w(a:b))
+            call pattern_holds(cs, x, pattern, ok, slack)
+            if (.not. ok) exit
+            top = j
+        end do
+        ! in collisions, each a scan of the n rates and a few operations
+        cost = 1 + (nw*(size(w) + size(pattern)) + (2*top + 3)*(nw*nw*nw + size(pattern)*size(w))) &
+            /(size(w) + 4)
+        if (top < 0) return
+        if (top == jump_levels) then
+            id = -1
+            return
+        end if
+        ! then the rest of the count, bit by bit: x holds, y is tried
+        times = 2**top
+        x(a:b) = matmul(pw(:, :, top), w(a:b))
+        y = x
+        do j = top - 1, 0, -1
+            y(a:b) = matmul(pw(:, :, j), x(a:b))
+            call pattern_holds(cs, y, pattern, ok, slack)
+            if (ok) then
+                times = times + 2**j
+                x(a:b) = y(a:b)
+            end if
+        end do
+        call record_jump(cs, pattern, times, id)
+        ! (the table full: w is left where it was)
+        if (id > 0) w = x
+    end subroutine jump_ahead
+
+    !> The map of the rates on contacts a..b over one period of the pattern
+    !> (columns: the images of the unit rates).
+    pure subroutine period_map(cs, pattern, a, b, m)
+        type(cascade_t), intent(in) :: cs
+        integer, intent(in) :: pattern(:), a, b
+        real(dp), intent(out) :: m(:, :)
+        real(dp) :: u(size(cs%kl))
+        integer :: k, i
+        do k = 1, b - a + 1
+            u = 0
+            u(a + k - 1) = 1
+            do i = 1, size(pattern)
+                call cascade_collide(u, cs, pattern(i))
+            end do
+            m(:, k) = u(a:b)
+        end do
+    end subroutine period_map
+
+    !> Whether (`ok`) the rule chooses every collision of one period of the
+    !> pattern from the rates w, each with a positive slack; `slack` is the
+    !> smallest, relative to the largest rate at its choice.
+    pure subroutine pattern_holds(cs, w, pattern, ok, slack)
+        type(cascade_t), intent(in) :: cs
+        real(dp), intent(in) :: w(:)
+        integer, intent(in) :: pattern(:)
+        logical, intent(out) :: ok
+        real(dp), intent(out) :: slack
+        real(dp) :: u(size(w)), s
+        integer :: i
+        ok = .false.
+        slack = 1
+        u = w
+        do i = 1, size(pattern)
+            s = choice_slack(u, pattern(i))
+            if (.not. s > 0) return
+            slack = min(slack, s/maxval(abs(u)))
+            call cascade_collide(u, cs, pattern(i))
+        end do
+        ok = .true.
+    end subroutine pattern_holds
+
+    !> The entry of the jump (pattern, times) in cs%jump, added if new (0 if
+    !> the table is full).
+    pure subroutine record_jump(cs, pattern, times, id)
+        type(cascade_t), intent(inout) :: cs
+        integer, intent(in) :: pattern(:), times
+        integer, intent(out) :: id
+        integer :: l
+        l = size(pattern)
+        do id = 1, cs%jumps
+            associate (jp => cs%jump(id))
+                if (jp%length == l .and. jp%times == times) then
+                    if (all(jp%contact(:l) == pattern)) return
+                end if
+            end associate
+        end do
+        id = 0
+        if (cs%jumps == size(cs%jump)) return
+        cs%jumps = cs%jumps + 1
+        id = cs%jumps
+        cs%jump(id)%length = l
+        cs%jump(id)%times = times
+        cs%jump(id)%contact(:l) = pattern
+    end subroutine record_jump
+
+    !> A recorded jump taken again from the rates w: the pattern must hold
+    !> where it starts and where it ends (`ok`); `slack` is the smaller of the
+    !> two. Its map over `times` periods is applied by repeated squaring.
+    pure subroutine repeat_jump(cs, jp, w, slack, ok)
+        type(cascade_t), intent(in) :: cs
+        type(jump_t), intent(in) :: jp
+        real(dp), intent(inout) :: w(:)
+        real(dp), intent(out) :: slack
+        logical, intent(out) :: ok
+        real(dp), allocatable :: m(:, :)
+        real(dp) :: end_slack
+        integer :: a, b, t, st
+        associate (pattern => jp%contact(:jp%length))
+            call pattern_holds(cs, w, pattern, ok, slack)
+            if (.not. ok) return
+            a = max(1, minval(pattern) - 1)
+            b = min(size(w), maxval(pattern) + 1)
+            allocate (m(b - a + 1, b - a + 1), stat=st)
+            ok = st == 0
+            if (.not. ok) return
+            call period_map(cs, pattern, a, b, m)
+            t = jp%times
+            do while (t > 0)
+                if (mod(t, 2) == 1) w(a:b) = matmul(m, w(a:b))
+                t = t/2
+                if (t > 0) m = matmul(m, m)
+            end do
+            call pattern_holds(cs, w, pattern, ok, end_slack)
+        end associate
+        slack = min(slack, end_slack)
+    end subroutine repeat_jump
+
+    !> The period of the longest tail of seq that repeats itself at least three
+    !> times (0 if none): with the prefix function of seq read backwards, the
+    !> last l entries have period l - pi(l).
+    pure subroutine cascade_period(seq, period)
+        integer, intent(in) :: seq(:)
+        integer, intent(out) :: period
+        ! (on the heap: a sequence of 2^20 would not fit a thread's stack)
+        integer, allocatable :: pi(:)
+        integer :: l, k, i, n, st
+        n = size(seq)
+        period = 0
+        if (n < 3) return
+        allocate (pi(n), stat=st)
+        if (st /= 0) return
+        pi(1) = 0
+        do i = 2, n
+            k = pi(i - 1)
+            do while (k > 0)
+                if (seq(n + 1 - i) == seq(n - k)) exit
+                k = pi(k)
+            end do
+            if (seq(n + 1 - i) == seq(n - k)) k = k + 1
+            pi(i) = k
+        end do
+        do l = n, 3, -1
+            if (l >= 3*(l - pi(l))) then
+                period = l - pi(l)
+                return
+            end if
+        end do
+    end subroutine cascade_period
+
+    !> Run the pattern of entries (contacts, and jumps taken again by
+    !> repeat_jump) for order_probes periods from the approach rates w, and
+    !> ask whether it takes in every contact, chooses each of its collisions
+    !> by the engine's rule with a relative margin m > 0 (its rate positive
+    !> and larger than every other; in a jump, where it starts and where it
+    !> ends), contracts the rates each period (by lambda < 1) and settles
+    !> their direction, so that the drift still to come (the last change
+    !> times r/(1 - r) for a change that falls by r per period, or the
+    !> rounding's own once the change is down to it) is below drift_safety
+    !> times m. Then the pattern repeats for ever (as a cycle does): the rates
+    !> tend to 0 along the dominant direction of the period's map, at which
+    !> every choice holds with margin m, and every sphere to the block's mean
+    !> velocity. Within a jump the margins are checked at its two ends (and,
+    !> when it was first taken, at the points of its doubling search) and
+    !> taken to hold between them: they are linear in M^k w, whose direction
+    !> has settled over the jump_need periods before the jump.
+    pure subroutine pattern_contracts(w, cs, pattern, merges)
+        real(dp), intent(in) :: w(:)
+        type(cascade_t), intent(in) :: cs
+        integer, intent(in) :: pattern(:)
+        logical, intent(out) :: merges
+        real(dp) :: u(size(w)), start(size(w)), lam(order_probes), drift(order_probes)
+        real(dp) :: margin, slack, noise, r, bound
+        logical :: seen(size(w)), ok
+        integer :: k, i, c, ops
+        merges = .false.
+        seen = .false.
+        ops = 0
+        do i = 1, size(pattern)
+            c = pattern(i)
+            if (c > 0) then
+                seen(c) = .true.
+                ops = ops + 1
+            else
+                associate (jp => cs%jump(-c))
+                    seen(jp%contact(:jp%length)) = .true.
+                    ops = ops + 2*jump_levels*jp%length
+                end associate
+            end if
+        end do
+        if (.not. all(seen)) return
+        u = w
+        margin = 1
+        do k = 1, order_probes
+            u = u/maxval(abs(u))
+            start = u
+            do i = 1, size(pattern)
+                c = pattern(i)
+                if (c > 0) then
+                    slack = choice_slack(u, c)
+                    if (.not. slack > 0) return
+                    slack = slack/maxval(abs(u))
+                    call cascade_collide(u, cs, c)
+                else
+                    call repeat_jump(cs, cs%jump(-c), u, slack, ok)
+                    if (.not. ok) return
+                end if
+                margin = min(margin, slack)
+            end do
+            lam(k) = maxval(abs(u))
+            drift(k) = maxval(abs(u/lam(k) - start))
+        end do
+        noise = 16*ops*epsilon(1.0_dp)
+        if (.not. all(lam < 1 - noise)) return
+        ! the direction settles: its change does not grow from period to period
+        if (any(drift(2:) > drift(:order_probes - 1) + noise)) return
+        if (drift(order_probes) <= noise) then
+            bound = noise
+        else
+            r = drift(order_probes)/drift(order_probes - 1)
+            if (.not. r < 1) return
+            bound = drift(order_probes)*r/(1 - r)
+        end if
+        merges = bound < drift_safety*margin
+    end subroutine pattern_contracts
+
+end module sphere_row_cascade
