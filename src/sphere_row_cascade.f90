@@ -13,7 +13,10 @@ module sphere_row_cascade
     use sphere_row_kinds, only: dp
     implicit none
     private
-    public :: ordered_cascade_merges, cascade_jump
+    public :: ordered_cascade_merges, cascade_jump, cascade_kind
+
+    !> The kind the cascade is run in, whatever the engine's.
+    integer, parameter :: cascade_kind = dp
 
     !> A try: its collisions at least and its work (collisions times contacts)
     !> at most, the sequence length at which a period is first looked for, and
@@ -87,10 +90,11 @@ contains
         merges = .false.
         steps = 0
         n = size(rates)
-        if (n < 2) return
+        if (n < 2 .or. size(kl) /= n .or. size(kr) /= n) return
         if (.not. maxval(abs(rates)) > 0) return
         most = max(order_steps_least, order_work/n)
-        allocate (seq(most), stat=st)
+        ! (one more: a jump adds a second entry in the last step)
+        allocate (seq(most + 1), stat=st)
         if (st /= 0) return
         call cascade_start(cs, kl, kr, e, jump_kinds_most, st)
         if (st /= 0) return
@@ -149,7 +153,8 @@ contains
         type(cascade_t) :: cs
         integer :: id, cost, st
         times = 0
-        if (size(pattern) > jump_period_most .or. size(w) < 1) return
+        if (size(pattern) < 1 .or. size(pattern) > jump_period_most) return
+        if (size(kl) /= size(w) .or. size(kr) /= size(w)) return
         if (any(pattern < 1 .or. pattern > size(w))) return
         call cascade_start(cs, kl, kr, e, 1, st)
         if (st /= 0) return
@@ -264,6 +269,8 @@ contains
         b = min(size(w), maxval(pattern) + 1)
         nw = b - a + 1
         if (nw > jump_window_most) return
+        ! (the table full: no more jumps)
+        if (cs%jumps == size(cs%jump)) return
         allocate (pw(nw, nw, 0:jump_levels), stat=st)
         if (st /= 0) return
         call period_map(cs, pattern, a, b, pw(:, :, 0))
@@ -298,7 +305,6 @@ contains
             end if
         end do
         call record_jump(cs, pattern, times, id)
-        ! (the table full: w is left where it was)
         if (id > 0) w = x
     end subroutine jump_ahead
 
@@ -445,8 +451,9 @@ contains
     !> every choice holds with margin m, and every sphere to the block's mean
     !> velocity. Within a jump the margins are checked at its two ends (and,
     !> when it was first taken, at the points of its doubling search) and
-    !> taken to hold between them: they are linear in M^k w, whose direction
-    !> has settled over the jump_need periods before the jump.
+    !> assumed, not checked, to hold between them: they are linear in M^k w,
+    !> so they can change sign inside only if M's subdominant part of w still
+    !> counts after the jump_need periods run before it.
     pure subroutine pattern_contracts(w, cs, pattern, merges)
         real(dp), intent(in) :: w(:)
         type(cascade_t), intent(in) :: cs

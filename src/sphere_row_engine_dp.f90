@@ -2,7 +2,7 @@
 module sphere_row_engine_dp
     use sphere_row_kinds, only: wp => dp, qp
     use sphere_row_format, only: real_str, itoa
-    use sphere_row_cascade, only: ordered_cascade_merges
+    use sphere_row_cascade, only: ordered_cascade_merges, cascade_kind
     use sphere_row_status, only: status_normal, status_collapsed, status_max_collisions, &
         status_invalid, event_start, event_collision, event_collapse
     implicit none

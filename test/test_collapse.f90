@@ -342,41 +342,58 @@ contains
         end do
     end subroutine test_long_rows
 
-    !> A light sphere shuttling between two heavy ones while a third contact
-    !> waits: the jump over the shuttle's periods (doubling its period map)
-    !> lands where stepping the rule period by period does, on the same count.
+    !> A light sphere shuttling between two heavy ones while other contacts
+    !> wait: the jump over the shuttle's periods (doubling its period map)
+    !> lands where stepping the rule period by period does, on the same count;
+    !> at the first contacts of a block, and inside one (a window of contacts
+    !> that is not the whole block).
     subroutine test_cascade_jump(error)
         type(error_t), allocatable, intent(out) :: error
-        real(dp), parameter :: m(4) = [126.0_dp, 0.00105_dp, 55.0_dp, 31.5_dp], e = 0.24_dp
-        real(dp) :: kl(3), kr(3), w(3), jumped(3), stepped(3)
-        integer :: seq(6), pattern(2), times, periods
-        kl = (1 + e)*m(2:)/(m(:3) + m(2:))
-        kr = (1 + e)*m(:3)/(m(:3) + m(2:))
-        w = [0.5_dp, 0.3_dp, 0.2_dp]
-        ! step until the shuttle has run three periods
-        seq = -[1, 2, 3, 4, 5, 6]
-        do while (.not. all(seq(3:) == seq(:4)))
-            seq = [seq(2:), rule(w)]
-            call collide(w, seq(6))
-        end do
-        pattern = seq(5:6)
-        jumped = w
-        call cascade_jump(kl, kr, e, pattern, jumped, times)
-        ! the rule, period by period, until it breaks: the jump lands one
-        ! period before that (where the pattern still holds once more)
-        periods = 0
-        stepped = w
-        do while (follows(w))
-            periods = periods + 1
-            if (periods == times) stepped = w
-        end do
-        call check(error, times > 1000 .and. times == periods - 1, &
-            "cascade jump: not the count of whole periods the rule takes")
+        real(dp), parameter :: e = 0.24_dp
+        real(dp), allocatable :: kl(:), kr(:)
+        integer :: pattern(2)
+        call one_block([126.0_dp, 0.00105_dp, 55.0_dp, 31.5_dp], [0.5_dp, 0.3_dp, 0.2_dp])
         if (allocated(error)) return
-        call check(error, maxval(abs(jumped - stepped)) <= 1.0e-10_dp*maxval(abs(stepped)), &
-            "cascade jump: rates differ from the stepped ones")
+        call one_block([300.0_dp, 126.0_dp, 0.00105_dp, 55.0_dp, 31.5_dp, 20.0_dp], &
+            [0.0_dp, 0.5_dp, 0.3_dp, 0.2_dp, 0.1_dp])
     contains
-        !> The rule's choice: the largest closing rate, the leftmost of equals.
+        !> A block of masses m with approach rates w0 at its contacts.
+        subroutine one_block(m, w0)
+            real(dp), intent(in) :: m(:), w0(:)
+            real(dp) :: w(size(w0)), jumped(size(w0)), stepped(size(w0))
+            integer :: seq(6), times, periods, n
+            n = size(w0)
+            w = w0
+            kl = (1 + e)*m(2:)/(m(:n) + m(2:))
+            kr = (1 + e)*m(:n)/(m(:n) + m(2:))
+            ! step until a pattern of two contacts has run three periods
+            seq = -[1, 2, 3, 4, 5, 6]
+            do while (.not. all(seq(3:) == seq(:4)))
+                seq = [seq(2:), rule(w)]
+                if (seq(6) == 0) exit
+                call collide(w, seq(6))
+            end do
+            call check(error, all(seq > 0), "cascade jump: the block's cascade ended")
+            if (allocated(error)) return
+            pattern = seq(5:6)
+            jumped = w
+            call cascade_jump(kl, kr, e, pattern, jumped, times)
+            ! the rule, period by period, until it breaks: the jump lands one
+            ! period before that (where the pattern still holds once more)
+            periods = 0
+            stepped = w
+            do while (follows(w))
+                periods = periods + 1
+                if (periods == times) stepped = w
+            end do
+            call check(error, times > 1000 .and. times == periods - 1, &
+                "cascade jump: not the count of whole periods the rule takes")
+            if (allocated(error)) return
+            call check(error, maxval(abs(jumped - stepped)) <= 1.0e-10_dp*maxval(abs(stepped)), &
+                "cascade jump: rates differ from the stepped ones")
+        end subroutine one_block
+        !> The rule's choice: the largest closing rate, the leftmost of equals
+        !> (0 if none closes).
         integer function rule(u)
             real(dp), intent(in) :: u(:)
             rule = maxloc(u, 1)
@@ -391,8 +408,8 @@ contains
             if (c < size(u)) u(c + 1) = u(c + 1) + kr(c)*uc
             u(c) = -e*uc
         end subroutine collide
-        !> Whether one more period of the pattern follows from w (then taken);
-        !> from a copy, so that w is left where the pattern breaks.
+        !> Whether one more period of the pattern follows from u (then taken);
+        !> from a copy, so that u is left where the pattern breaks.
         logical function follows(u)
             real(dp), intent(inout) :: u(:)
             real(dp) :: v(size(u))

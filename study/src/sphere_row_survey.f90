@@ -76,26 +76,31 @@ contains
     end subroutine survey_scene
 
     !> Check the end of a run: it ended normally or quasi-plastic, momentum is
-    !> kept and energy has not grown to `slack` times the kind's resolution of
-    !> their scales, no gap is negative and no pair is still closing faster
-    !> than tol*v0. `why` names the first invariant broken (blank if none).
-    pure subroutine check_invariants(scene, run, slack, why)
+    !> kept and energy has not grown to within the kind's resolution of their
+    !> scales times `slack` plus per_collision for each collision the run took
+    !> (a collision's rounding moves momentum by a few epsilon of the largest
+    !> m v0 at most: no sphere's momentum exceeds it, since m |v| <=
+    !> sqrt(2 m E) <= sqrt(m m_1) v_0; measured 0.17 and 0.44 epsilon per
+    !> collision in two survey rows of 293,718 and 23,009 collisions), no gap
+    !> is negative and no pair is still closing faster than tol*v0. `why`
+    !> names the first invariant broken (blank if none).
+    pure subroutine check_invariants(scene, run, slack, per_collision, why)
         type(scene_t), intent(in) :: scene
         type(run_t), intent(in) :: run
-        real(qp), intent(in) :: slack
+        real(qp), intent(in) :: slack, per_collision
         character(len=:), allocatable, intent(out) :: why
-        real(qp) :: v0(scene%p), p_scale, e_start
+        real(qp) :: v0(scene%p), p_scale, e_start, resolution
         why = ""
         v0 = 0.0_qp
         v0(1) = scene%v0
         p_scale = maxval(scene%m)*scene%v0
         e_start = kinetic_energy(scene, v0)
+        resolution = (slack + per_collision*run%n)*epsilon(1.0_qp)
         if (run%status /= status_normal .and. run%status /= status_collapsed) then
             why = "status"
-        else if (abs(momentum(scene, run%v) - momentum(scene, v0)) &
-                 > slack*epsilon(1.0_qp)*p_scale) then
+        else if (abs(momentum(scene, run%v) - momentum(scene, v0)) > resolution*p_scale) then
             why = "momentum"
-        else if (kinetic_energy(scene, run%v) > e_start*(1.0_qp + slack*epsilon(1.0_qp))) then
+        else if (kinetic_energy(scene, run%v) > e_start*(1.0_qp + resolution)) then
             why = "energy"
         else if (any(run%y < 0.0_qp)) then
             why = "negative_gap"
