@@ -265,8 +265,7 @@ contains
         seen = .false.
         seen(pattern) = .true.
         if (all(seen)) return
-        a = max(1, minval(pattern) - 1)
-        b = min(size(w), maxval(pattern) + 1)
+        call pattern_window(pattern, size(w), a, b)
         nw = b - a + 1
         if (nw > jump_window_most) return
         ! (the table full: no more jumps)
@@ -274,14 +273,17 @@ contains
         allocate (pw(nw, nw, 0:jump_levels), stat=st)
         if (st /= 0) return
         call period_map(cs, pattern, a, b, pw(:, :, 0))
-        ! the largest 2^top periods after which the pattern still holds
+        ! the largest 2^top periods after which the pattern still holds (x
+        ! after them, y tried)
         top = -1
         x = w
+        y = w
         do j = 0, jump_levels
             if (j > 0) pw(:, :, j) = matmul(pw(:, :, j - 1), pw(:, :, j - 1))
-            x(a:b) = matmul(pw(:, :, j), w(a:b))
-            call pattern_holds(cs, x, pattern, ok, slack)
+            y(a:b) = matmul(pw(:, :, j), w(a:b))
+            call pattern_holds(cs, y, pattern, ok, slack)
             if (.not. ok) exit
+            x(a:b) = y(a:b)
             top = j
         end do
         ! in collisions, each a scan of the n rates and a few operations
@@ -292,10 +294,8 @@ contains
             id = -1
             return
         end if
-        ! then the rest of the count, bit by bit: x holds, y is tried
+        ! then the rest of the count, bit by bit
         times = 2**top
-        x(a:b) = matmul(pw(:, :, top), w(a:b))
-        y = x
         do j = top - 1, 0, -1
             y(a:b) = matmul(pw(:, :, j), x(a:b))
             call pattern_holds(cs, y, pattern, ok, slack)
@@ -307,6 +307,15 @@ contains
         call record_jump(cs, pattern, times, id)
         if (id > 0) w = x
     end subroutine jump_ahead
+
+    !> The window a..b of the n contacts whose rates a pattern changes: its
+    !> own and their neighbours.
+    pure subroutine pattern_window(pattern, n, a, b)
+        integer, intent(in) :: pattern(:), n
+        integer, intent(out) :: a, b
+        a = max(1, minval(pattern) - 1)
+        b = min(n, maxval(pattern) + 1)
+    end subroutine pattern_window
 
     !> The map of the rates on contacts a..b over one period of the pattern
     !> (columns: the images of the unit rates).
@@ -388,8 +397,7 @@ contains
         associate (pattern => jp%contact(:jp%length))
             call pattern_holds(cs, w, pattern, ok, slack)
             if (.not. ok) return
-            a = max(1, minval(pattern) - 1)
-            b = min(size(w), maxval(pattern) + 1)
+            call pattern_window(pattern, size(w), a, b)
             allocate (m(b - a + 1, b - a + 1), stat=st)
             ok = st == 0
             if (.not. ok) return
