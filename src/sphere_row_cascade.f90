@@ -26,6 +26,10 @@ module sphere_row_cascade
     !> Part of the smallest decision margin that the remaining drift of the
     !> direction may use up (as for the engine's certified cycles).
     real(dp), parameter :: drift_safety = 1.0e-2_dp
+    !> A cascade that stops with every rate below the engine's insignificant
+    !> one merges by the engine's fallback rule, if no choice on the way was
+    !> closer than this many roundings per unit of work done.
+    real(dp), parameter :: quiet_noise = 16
     !> Jumps over a pattern repeated by part of the block: its longest period,
     !> its widest window of contacts, the most doublings of its repeat count,
     !> the most distinct jumps (pattern and count) a try records, and the
@@ -61,6 +65,23 @@ contains
     !> merge in every order, does not prove (light spheres between heavy
     !> ones, where some order splits the block).
     !>
+    !> Or, with quiet > 0 (the engine's insignificant rate, passed only where
+    !> the engine's own order is the one at equal times), whether the cascade
+    !> stops before any pattern shows, its fastest approach no longer above
+    !> quiet, with every rate, opening ones too, at quiet or below: the
+    !> engine, stepping the same collisions, would stop there too and merge
+    !> the block by its fallback rule, so it may merge it at once. This holds
+    !> only if the engine's collisions are those run here, so every choice on
+    !> the way must have been clear by more than quiet_noise roundings per
+    !> unit of work done (`steps`, which counts a jump's matrix work too; the
+    !> slack of rule_choice, and of pattern_holds at the periods a jump
+    !> checks: its two ends and the points of its search); if one was not, no
+    !> merge is reported and the engine steps the cascade itself. Most
+    !> cascades that end this way follow no repeating pattern (spheres that
+    !> arrive one by one at a growing block, each setting off a cascade that
+    !> falls 30 decades within a few thousand collisions). `quiet_end` says
+    !> that the merge is this one, the fallback's.
+    !>
     !> A pattern that only part of the block repeats (a light sphere shuttling
     !> between two heavy ones while other contacts wait) repeats for as long
     !> as its rates stay above the waiting ones, which, as its rates fall by a
@@ -77,17 +98,18 @@ contains
     !> for a period after order_first_check, twice as many, ... entries, and
     !> a period found is checked by pattern_contracts: a numerical
     !> certificate. `steps` returns the work done, in collisions.
-    pure subroutine ordered_cascade_merges(kl, kr, rates, e, merges, steps)
-        real(dp), intent(in) :: kl(:), kr(:), rates(:), e
-        logical, intent(out) :: merges
+    pure subroutine ordered_cascade_merges(kl, kr, rates, e, quiet, merges, steps, quiet_end)
+        real(dp), intent(in) :: kl(:), kr(:), rates(:), e, quiet
+        logical, intent(out) :: merges, quiet_end
         integer, intent(out) :: steps
         type(cascade_t) :: cs
-        real(dp) :: w(size(rates))
+        real(dp) :: w(size(rates)), scale, least, slack
         integer, allocatable :: seq(:)
         integer :: agree(jump_period_most)
-        logical :: blocked(jump_period_most)
+        logical :: blocked(jump_period_most), stopped, watch
         integer :: n, most, check, period, c, items, per, id, cost, st
         merges = .false.
+        quiet_end = .false.
         steps = 0
         n = size(rates)
         if (n < 2 .or. size(kl) /= n .or. size(kr) /= n) return
@@ -98,35 +120,53 @@ contains
         if (st /= 0) return
         call cascade_start(cs, kl, kr, e, jump_kinds_most, st)
         if (st /= 0) return
-        w = rates/maxval(abs(rates))
+        ! the rates are scale*w, w kept about 1
+        scale = maxval(abs(rates))
+        w = rates/scale
+        least = 1
+        stopped = .false.
+        watch = quiet > 0
         check = order_first_check
         items = 0
         agree = 0
         blocked = .false.
+        ! until the budget is spent or, with quiet > 0, the engine's cascade
+        ! stops, its fastest approach insignificant, with every rate so
         do while (steps < most)
-            c = rule_choice(w)
+            call rule_choice(w, c, slack)
             ! no contact closes: the cascade ends, a finite one
             if (c == 0) return
+            if (watch) then
+                if (scale*w(c) <= quiet) then
+                    stopped = scale*maxval(abs(w)) <= quiet
+                    if (stopped) exit
+                    ! the engine stops short of a merge (an opening rate is
+                    ! significant): the try goes on without the rule
+                    watch = .false.
+                end if
+            end if
+            least = min(least, slack)
             call cascade_collide(w, cs, c)
             steps = steps + 1
             items = items + 1
             seq(items) = c
             ! the rates fall by up to e per collision: kept about 1
-            if (mod(items, 8) == 0) w = w/maxval(abs(w))
+            if (mod(items, 8) == 0) call rescale(w, scale)
             call watch_repeats(seq(:items), agree, blocked, per)
             if (per > 0) then
-                call jump_ahead(cs, w, seq(items - per + 1:items), id, cost)
+                call jump_ahead(cs, w, seq(items - per + 1:items), id, cost, slack)
                 steps = steps + cost
                 ! a part of the block that repeats its pattern for ever
                 if (id < 0) return
                 if (id == 0) then
                     blocked(per) = .true.
                 else
+                    least = min(least, slack)
                     items = items + 1
                     seq(items) = -id
                     agree = 0
                     blocked = .false.
-                    w = w/maxval(abs(w))
+                    call rescale(w, scale)
                 end if
             end if
             if (items < check) cycle
@@ -136,9 +176,15 @@ contains
             call pattern_contracts(w, cs, seq(items - period + 1:items), merges)
             if (merges) return
         end do
-        ! the budget spent: a last look at the whole sequence
+        ! a last look at the whole sequence: a certified pattern is the better
+        ! reason to merge
         call cascade_period(seq(items/2 + 1:items), period)
         if (period > 0) call pattern_contracts(w, cs, seq(items - period + 1:items), merges)
+        if (merges .or. .not. stopped) return
+        ! the block merges by the engine's fallback rule if every choice on
+        ! the way was clear (if one was not, the engine steps it)
+        merges = least > quiet_noise*steps*epsilon(w)
+        quiet_end = merges
     end subroutine ordered_cascade_merges
 
     !> One jump of a pattern of contacts, as the ordered cascade takes it once
@@ -151,6 +197,7 @@ contains
         real(dp), intent(inout) :: w(:)
         integer, intent(out) :: times
         type(cascade_t) :: cs
+        real(dp) :: least
         integer :: id, cost, st
         times = 0
         if (size(pattern) < 1 .or. size(pattern) > jump_period_most) return
@@ -158,7 +205,7 @@ contains
         if (any(pattern < 1 .or. pattern > size(w))) return
         call cascade_start(cs, kl, kr, e, 1, st)
         if (st /= 0) return
-        call jump_ahead(cs, w, pattern, id, cost)
+        call jump_ahead(cs, w, pattern, id, cost, least)
         times = min(id, 0)
         if (id > 0) times = cs%jump(id)%times
     end subroutine cascade_jump
@@ -181,21 +228,43 @@ contains
         cs%e = e
     end subroutine cascade_start
 
-    !> The contact that collides next by the engine's rule at equal times (the
-    !> largest closing rate, the leftmost of equals), 0 if none closes.
-    pure integer function rule_choice(w) result(c)
+    !> The contact c that collides next by the engine's rule at equal times
+    !> (the largest closing rate, the leftmost of equals), 0 if none closes,
+    !> and by how much it is the choice (choice_slack) relative to the
+    !> largest rate.
+    pure subroutine rule_choice(w, c, slack)
         real(dp), intent(in) :: w(:)
-        real(dp) :: wc
+        integer, intent(out) :: c
+        real(dp), intent(out) :: slack
+        real(dp) :: wc, second, top
         integer :: j
         c = 0
         wc = 0
+        second = -huge(wc)
+        top = 0
         do j = 1, size(w)
+            top = max(top, abs(w(j)))
             if (w(j) > wc) then
+                second = max(second, wc)
                 wc = w(j)
                 c = j
+            else
+                second = max(second, w(j))
             end if
         end do
-    end function rule_choice
+        slack = 0
+        if (c > 0) slack = min(wc, wc - second)/top
+    end subroutine rule_choice
+
+    !> Divide the rates w by their largest size and multiply scale by it.
+    pure subroutine rescale(w, scale)
+        real(dp), intent(inout) :: w(:)
+        real(dp), intent(inout) :: scale
+        real(dp) :: f
+        f = maxval(abs(w))
+        w = w/f
+        scale = scale*f
+    end subroutine rescale
 
     !> By how much contact c is the rule's choice: its rate less the largest
     !> other rate, and at most its rate itself (not positive: it is not).
@@ -250,18 +319,22 @@ contains
     !> cs%jump (0: not jumped, the pattern takes in every contact, its window
     !> is too wide, it does not hold one period on, or the table is full; -1:
     !> it holds for 2^jump_levels periods, i.e. it repeats for ever while the
-    !> rest of the block waits). `cost` is the work in collisions.
-    pure subroutine jump_ahead(cs, w, pattern, id, cost)
+    !> rest of the block waits). `cost` is the work in collisions; `least` is
+    !> the smallest slack of a choice (pattern_holds) where the pattern was
+    !> checked on the way to the jump's end.
+    pure subroutine jump_ahead(cs, w, pattern, id, cost, least)
         type(cascade_t), intent(inout) :: cs
         real(dp), intent(inout) :: w(:)
         integer, intent(in) :: pattern(:)
         integer, intent(out) :: id, cost
+        real(dp), intent(out) :: least
         real(dp), allocatable :: pw(:, :, :)
         real(dp) :: x(size(w)), y(size(w)), slack
         logical :: seen(size(w)), ok
         integer :: a, b, nw, j, top, times, st
         id = 0
         cost = 1
+        least = 1
         seen = .false.
         seen(pattern) = .true.
         if (all(seen)) return
@@ -283,6 +356,7 @@ contains
             y(a:b) = matmul(pw(:, :, j), w(a:b))
             call pattern_holds(cs, y, pattern, ok, slack)
             if (.not. ok) exit
+            least = min(least, slack)
             x(a:b) = y(a:b)
             top = j
         end do
@@ -300,6 +374,7 @@ contains
             y(a:b) = matmul(pw(:, :, j), x(a:b))
             call pattern_holds(cs, y, pattern, ok, slack)
             if (ok) then
+                least = min(least, slack)
                 times = times + 2**j
                 x(a:b) = y(a:b)
             end if

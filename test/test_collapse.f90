@@ -33,7 +33,8 @@ contains
             new_unittest("light_spheres_between_heavy", test_light_between_heavy), &
             new_unittest("long_rows_answer", test_long_rows), &
             new_unittest("cascade_jump_equals_stepping", test_cascade_jump), &
-            new_unittest("shuttle_in_touching_row", test_shuttle_row) &
+            new_unittest("shuttle_in_touching_row", test_shuttle_row), &
+            new_unittest("quiet_cascade_matches_fallback", test_quiet_cascade) &
             ]
     end function collect_collapse
 
@@ -450,5 +451,49 @@ contains
             if (allocated(error)) return
         end do
     end subroutine test_shuttle_row
+
+    !> An equal-mass row whose spheres arrive one by one at a growing touching
+    !> block: once a limit has closed the block's gaps, each arrival sets off a
+    !> cascade at one instant that follows no repeating pattern and falls to
+    !> insignificant rates within a few thousand collisions. The cascade in
+    !> the engine's order, run in double precision, shows that the fallback
+    !> rule will merge the block; the run with that rule alone steps every
+    !> collision and ends with the same velocities (within a few roundings).
+    subroutine test_quiet_cascade(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(scene_t) :: scene
+        type(run_t) :: fast, slow
+        integer :: stat, way
+        character(len=200) :: msg
+        character(len=*), parameter :: ways(2) = ["scan    ", "calendar"]
+        ! the gaps scanned for the next impact, then taken from a calendar
+        do way = 1, size(ways)
+            call scene_init(scene, stat, msg, p=13, e=0.47820431017316877841949462890625_qp, &
+                gaps=[1.6572488923557102680206298828125_qp, 1.8588508977554738521575927734375_qp, &
+                1.6575302076525986194610595703125_qp, 0.0535340649075806140899658203125_qp, &
+                1.7805416318587958812713623046875_qp, 0.3285969612188637256622314453125_qp, &
+                0.6679445472545921802520751953125_qp, 0.7546023228205740451812744140625_qp, &
+                1.6365618654526770114898681640625_qp, 0.3961061802692711353302001953125_qp, &
+                0.3520521004684269428253173828125_qp, 0.0_qp])
+            if (way == 2) scene%calendar_from = 2
+            call simulate(scene, fast)
+            scene%closed_form_limits = .false.
+            scene%max_collisions = 1000000
+            call simulate(scene, slow)
+            call check(error, fast%status == status_collapsed .and. fast%n < 5000, &
+                "quiet cascade ("//trim(ways(way))//"): no collapse within 5000 collisions")
+            if (allocated(error)) return
+            ! a limit that is the fallback's, not a closed form
+            call check(error, fast%collapses > fast%closed_limits, &
+                "quiet cascade ("//trim(ways(way))//"): no limit taken by the fallback's rule")
+            if (allocated(error)) return
+            call check(error, slow%status == status_collapsed .and. slow%n > 2*fast%n, &
+                "quiet cascade ("//trim(ways(way))//"): the fallback alone needs no longer run")
+            if (allocated(error)) return
+            call check(error, all(abs(fast%v - slow%v) <= 1.0e3_qp*eps), &
+                "quiet cascade ("//trim(ways(way))//"): velocities differ from the fallback's")
+            if (allocated(error)) return
+        end do
+    end subroutine test_quiet_cascade
 
 end module test_collapse

@@ -126,8 +126,11 @@ contains
             "through touching spheres proven to merge by an invariant box of its momentum "// &
             "ratios, or by its sequence in the engine's order at equal times settling into "// &
             "a contracting pattern of every contact (a shuttle of part of the block jumped "// &
-            "by powers of its period's map), a collision cycle certified to repeat "// &
-            "for ever) and, for the first of "// &
+            "by powers of its period's map) or, in a block whose gaps are exactly "// &
+            "closed, by its rates all falling below the insignificant rate within the "// &
+            "try, every choice on the way clear (the fallback's own end, reached "// &
+            "without stepping the engine through it), a "// &
+            "collision cycle certified to repeat for ever) and, for the first of "// &
             "them, with the fallback alone (every rate and gap of a group insignificant). "// &
             field("collapse", "collapse.answered")//" of "// &
             field("collapse", "collapse.answered", check_value)//" rows end within the "// &
