@@ -230,8 +230,9 @@ contains
 
     !> The contact c that collides next by the engine's rule at equal times
     !> (the largest closing rate, the leftmost of equals), 0 if none closes,
-    !> and by how much it is the choice (choice_slack) relative to the
-    !> largest rate.
+    !> and by how much it is the choice, relative to the largest rate: its
+    !> rate less the largest other rate, and at most its rate itself (0 for
+    !> a tie).
     pure subroutine rule_choice(w, c, slack)
         real(dp), intent(in) :: w(:)
         integer, intent(out) :: c
@@ -265,18 +266,6 @@ contains
         w = w/f
         scale = scale*f
     end subroutine rescale
-
-    !> By how much contact c is the rule's choice: its rate less the largest
-    !> other rate, and at most its rate itself (not positive: it is not).
-    pure real(dp) function choice_slack(w, c) result(slack)
-        real(dp), intent(in) :: w(:)
-        integer, intent(in) :: c
-        integer :: j
-        slack = w(c)
-        do j = 1, size(w)
-            if (j /= c) slack = min(slack, w(c) - w(j))
-        end do
-    end function choice_slack
 
     !> A collision at contact c of the block, on its approach rates w.
     pure subroutine cascade_collide(w, cs, c)
@@ -420,14 +409,14 @@ contains
         logical, intent(out) :: ok
         real(dp), intent(out) :: slack
         real(dp) :: u(size(w)), s
-        integer :: i
+        integer :: i, c
         ok = .false.
         slack = 1
         u = w
         do i = 1, size(pattern)
-            s = choice_slack(u, pattern(i))
-            if (.not. s > 0) return
-            slack = min(slack, s/maxval(abs(u)))
+            call rule_choice(u, c, s)
+            if (c /= pattern(i) .or. .not. s > 0) return
+            slack = min(slack, s)
             call cascade_collide(u, cs, pattern(i))
         end do
         ok = .true.
@@ -568,14 +557,12 @@ contains
             u = u/maxval(abs(u))
             start = u
             do i = 1, size(pattern)
-                c = pattern(i)
-                if (c > 0) then
-                    slack = choice_slack(u, c)
-                    if (.not. slack > 0) return
-                    slack = slack/maxval(abs(u))
+                if (pattern(i) > 0) then
+                    call rule_choice(u, c, slack)
+                    if (c /= pattern(i) .or. .not. slack > 0) return
                     call cascade_collide(u, cs, c)
                 else
-                    call repeat_jump(cs, cs%jump(-c), u, slack, ok)
+                    call repeat_jump(cs, cs%jump(-pattern(i)), u, slack, ok)
                     if (.not. ok) return
                 end if
                 margin = min(margin, slack)
