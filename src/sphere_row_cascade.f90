@@ -30,6 +30,11 @@ module sphere_row_cascade
     !> one merges by the engine's fallback rule, if no choice on the way was
     !> closer than this many roundings per unit of work done.
     real(dp), parameter :: quiet_noise = 16
+    !> A try that passes the engine's end of its cascade, where it may not
+    !> merge, goes on for at most this many times the work done up to there
+    !> (at least 2 order_first_check collisions): 256 leaves every row of the
+    !> collapse survey as it was without the bound, 16 does not.
+    integer, parameter :: quiet_more = 256
     !> Jumps over a pattern repeated by part of the block: its longest period,
     !> its widest window of contacts, the most doublings of its repeat count,
     !> the most distinct jumps (pattern and count) a try records, and the
@@ -65,12 +70,15 @@ contains
     !> merge in every order, does not prove (light spheres between heavy
     !> ones, where some order splits the block).
     !>
-    !> Or, with quiet > 0 (the engine's insignificant rate, passed only where
-    !> the engine's own order is the one at equal times), whether the cascade
-    !> stops before any pattern shows, its fastest approach no longer above
-    !> quiet, with every rate, opening ones too, at quiet or below: the
-    !> engine, stepping the same collisions, would stop there too and merge
-    !> the block by its fallback rule, so it may merge it at once. This holds
+    !> With quiet > 0 (the engine's insignificant rate) the try watches for
+    !> the point where the engine's own cascade would end, its fastest
+    !> approach no longer above quiet, with every rate, opening ones too, at
+    !> quiet or below: the engine, stepping its collisions, merges the block
+    !> there by its fallback rule, so a try that goes on can save it no more
+    !> than the collisions it takes to get there; it looks for a pattern for
+    !> at most quiet_more times the work done up to there. With `quiet_merge`
+    !> (passed only where the engine's own order is the one at equal times)
+    !> the block is merged at that point at once. This holds
     !> only if the engine's collisions are those run here, so every choice on
     !> the way must have been clear by more than quiet_noise roundings per
     !> unit of work done (`steps`, which counts a jump's matrix work too; the
@@ -98,8 +106,10 @@ contains
     !> for a period after order_first_check, twice as many, ... entries, and
     !> a period found is checked by pattern_contracts: a numerical
     !> certificate. `steps` returns the work done, in collisions.
-    pure subroutine ordered_cascade_merges(kl, kr, rates, e, quiet, merges, steps, quiet_end)
+    pure subroutine ordered_cascade_merges(kl, kr, rates, e, quiet, quiet_merge, merges, steps, &
+        quiet_end)
         real(dp), intent(in) :: kl(:), kr(:), rates(:), e, quiet
+        logical, intent(in) :: quiet_merge
         logical, intent(out) :: merges, quiet_end
         integer, intent(out) :: steps
         type(cascade_t) :: cs
@@ -139,9 +149,13 @@ contains
             if (watch) then
                 if (scale*w(c) <= quiet) then
                     stopped = scale*maxval(abs(w)) <= quiet
-                    if (stopped) exit
-                    ! the engine stops short of a merge (an opening rate is
-                    ! significant): the try goes on without the rule
+                    if (stopped .and. quiet_merge) exit
+                    ! the engine merges by its fallback here, after about
+                    ! `steps` collisions: a pattern is looked for a while
+                    ! longer, for a bounded multiple of that work
+                    if (stopped) most = min(most, max(quiet_more*steps, 2*order_first_check))
+                    ! (the engine stops short of a merge if an opening rate
+                    ! is significant: the try goes on without the rule)
                     watch = .false.
                 end if
             end if
@@ -180,7 +194,7 @@ contains
         ! reason to merge
         call cascade_period(seq(items/2 + 1:items), period)
         if (period > 0) call pattern_contracts(w, cs, seq(items - period + 1:items), merges)
-        if (merges .or. .not. stopped) return
+        if (merges .or. .not. (stopped .and. quiet_merge)) return
         ! the block merges by the engine's fallback rule if every choice on
         ! the way was clear (if one was not, the engine steps it)
         merges = least > quiet_noise*steps*epsilon(w)
