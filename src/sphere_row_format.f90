@@ -3,6 +3,7 @@
 !> prose), integers of either kind with as many places as they need.
 module sphere_row_format
     use, intrinsic :: iso_fortran_env, only: int64
+    use, intrinsic :: ieee_arithmetic, only: ieee_is_negative
     use sphere_row_kinds, only: qp
     implicit none
     private
@@ -11,6 +12,11 @@ module sphere_row_format
     !> Length of the buffers of real_text (enough for up to 52 digits) and
     !> int_text.
     integer, parameter :: number_text_length = 64
+    !> Limbs of nine decimal digits for the longest integer that the exact
+    !> decimal digits of a real128 need: m 5^16607, m of 113 bits (the
+    !> smallest subnormal), has some 11,650 digits.
+    integer, parameter :: limbs_most = 1320
+    integer(int64), parameter :: limb_base = 1000000000_int64
 
     !> Text of an integer of either kind.
     interface itoa
@@ -81,36 +87,172 @@ contains
         str = buf(:length)
     end function real_str
 
-    !> real_str into `text`, its first `length` characters. No character
-    !> result of deferred length: gfortran 12 keeps the length of such a
-    !> result in a static variable of the caller, so two threads that call one
-    !> at once may get each other's length; threads may call this subroutine
-    !> at once.
+    !> real_str into `text`, its first `length` characters: the text that
+    !> Fortran's ES(digits+ew+8).(digits-1)E(ew) edit descriptor writes (ew = 2
+    !> exponent digits unless |log10 |x|| >= 99, then 4), without its leading
+    !> blanks. Made without formatted I/O: gfortran's internal write holds one
+    !> lock of its run-time library for the whole statement, so that threads
+    !> formatting numbers at once wait for each other (measured: the b2 grid
+    !> on two threads spent most of its waits there). No character result of
+    !> deferred length either: gfortran 12 keeps the length of such a result
+    !> in a static variable of the caller, so two threads that call one at
+    !> once may get each other's length; threads may call this subroutine at
+    !> once.
     pure subroutine real_text(x, digits, text, length)
         real(qp), intent(in) :: x
         integer, intent(in) :: digits
         character(len=number_text_length), intent(out) :: text
         integer, intent(out) :: length
-        character(len=number_text_length) :: buf, form, w, d, e
-        integer :: ew, nw, nd, ne
+        character(len=number_text_length) :: mantissa, e
+        integer :: power, ew, ne
         if (x /= x) then
-            buf = "nan"
+            text = "nan"
         else if (abs(x) > huge(x)) then
-            buf = merge("inf ", "-inf", x > 0)
+            text = merge("inf ", "-inf", x > 0)
         else
-            ! two exponent digits unless |log10 |x|| >= 99
             ew = 2
             if (x /= 0.0_qp .and. (abs(x) >= 1.0e99_qp .or. abs(x) <= 1.0e-99_qp)) ew = 4
-            call int_text(int(digits + ew + 8, int64), w, nw)
-            call int_text(int(digits - 1, int64), d, nd)
-            call int_text(int(ew, int64), e, ne)
-            form = "(es"//w(:nw)//"."//d(:nd)//"e"//e(:ne)//")"
-            write (buf, form) x
-            buf = adjustl(buf)
+            call decimal_digits(abs(x), digits, mantissa, power)
+            call int_text(int(abs(power), int64), e, ne)
+            if (ne < ew) then
+                e = repeat("0", ew - ne)//e(:ne)
+                ne = ew
+            end if
+            text = mantissa(1:1)//"."//mantissa(2:digits)//merge("E+", "E-", power >= 0)//e(:ne)
+            if (ieee_is_negative(x)) text = "-"//text
         end if
-        length = len_trim(buf)
-        text = buf(:length)
+        length = len_trim(text)
     end subroutine real_text
+
+    !> The first n significant digits of y >= 0 (finite), rounded to nearest
+    !> with ties to even, as in y = 0.d1 d2 ... dn * 10^(power + 1): exactly,
+    !> from y = m 2^k (m an integer of at most 113 bits) as the integer m 2^k
+    !> (k >= 0) or m 5^(-k) times 10^k (k < 0), in limbs of nine decimal digits.
+    pure subroutine decimal_digits(y, n, mantissa, power)
+        real(qp), intent(in) :: y
+        integer, intent(in) :: n
+        character(len=number_text_length), intent(out) :: mantissa
+        integer, intent(out) :: power
+        integer(int64) :: limb(limbs_most)
+        character(len=9*limbs_most) :: all
+        real(qp) :: m, high
+        integer(int64) :: low
+        integer :: nl, k, shift, step, length, i
+        logical :: up
+        mantissa = repeat("0", n)
+        power = 0
+        if (y == 0.0_qp) return
+        m = scale(fraction(y), digits(y))
+        k = exponent(y) - digits(y)
+        ! m = high 2^56 + low into limbs, exactly (high and low are integers
+        ! of at most 57 bits, which int64 holds)
+        high = aint(scale(m, -56))
+        low = int(m - scale(high, 56), int64)
+        nl = 0
+        call limbs_add(limb, nl, int(high, int64))
+        call limbs_times(limb, nl, 2_int64**28)
+        call limbs_times(limb, nl, 2_int64**28)
+        call limbs_add(limb, nl, low)
+        shift = min(k, 0)
+        do while (k > 0)
+            step = min(k, 29)
+            call limbs_times(limb, nl, 2_int64**step)
+            k = k - step
+        end do
+        do while (k < 0)
+            step = min(-k, 13)
+            call limbs_times(limb, nl, 5_int64**step)
+            k = k + step
+        end do
+        ! the digits of the integer, from its most significant limb
+        length = 0
+        do i = nl, 1, -1
+            call limb_digits(limb(i), i == nl, all, length)
+        end do
+        power = length - 1 + shift
+        if (length <= n) then
+            mantissa(1:length) = all(1:length)
+            return
+        end if
+        mantissa(1:n) = all(1:n)
+        up = all(n + 1:n + 1) > "5"
+        if (all(n + 1:n + 1) == "5") up = verify(all(n + 2:length), "0") > 0 .or. &
+            mod(iachar(all(n:n)) - iachar("0"), 2) == 1
+        if (.not. up) return
+        do i = n, 1, -1
+            if (mantissa(i:i) /= "9") then
+                mantissa(i:i) = achar(iachar(mantissa(i:i)) + 1)
+                return
+            end if
+            mantissa(i:i) = "0"
+        end do
+        ! 9...9 rounded up
+        mantissa(1:1) = "1"
+        power = power + 1
+    end subroutine decimal_digits
+
+    !> Limbs 1..nl of an integer in base 10^9 times f (f < 2^31, so that no
+    !> product leaves int64).
+    pure subroutine limbs_times(limb, nl, f)
+        integer(int64), intent(inout) :: limb(:)
+        integer, intent(inout) :: nl
+        integer(int64), intent(in) :: f
+        integer(int64) :: carry, t
+        integer :: j
+        carry = 0
+        do j = 1, nl
+            t = limb(j)*f + carry
+            limb(j) = mod(t, limb_base)
+            carry = t/limb_base
+        end do
+        do while (carry > 0)
+            nl = nl + 1
+            limb(nl) = mod(carry, limb_base)
+            carry = carry/limb_base
+        end do
+    end subroutine limbs_times
+
+    !> Limbs 1..nl of an integer in base 10^9 plus a >= 0.
+    pure subroutine limbs_add(limb, nl, a)
+        integer(int64), intent(inout) :: limb(:)
+        integer, intent(inout) :: nl
+        integer(int64), intent(in) :: a
+        integer(int64) :: carry, t
+        integer :: j
+        carry = a
+        j = 0
+        do while (carry > 0)
+            j = j + 1
+            if (j > nl) then
+                nl = j
+                limb(j) = 0
+            end if
+            t = limb(j) + carry
+            limb(j) = mod(t, limb_base)
+            carry = t/limb_base
+        end do
+    end subroutine limbs_add
+
+    !> The nine digits of a limb appended to text(:length) (a leading limb
+    !> without its leading zeros).
+    pure subroutine limb_digits(value, leading, text, length)
+        integer(int64), intent(in) :: value
+        logical, intent(in) :: leading
+        character(len=9*limbs_most), intent(inout) :: text
+        integer, intent(inout) :: length
+        character(len=9) :: nine
+        integer(int64) :: rest
+        integer :: j, first
+        rest = value
+        do j = 9, 1, -1
+            nine(j:j) = achar(iachar("0") + int(mod(rest, 10_int64)))
+            rest = rest/10
+        end do
+        first = 1
+        if (leading) first = max(1, verify(nine, "0"))
+        text(length + 1:length + 10 - first) = nine(first:)
+        length = length + 10 - first
+    end subroutine limb_digits
 
     !> The shortest text (at most `digits` significant digits, default as many
     !> as needed) that reads back as `x`: 0.2, 1, 1000000, 1.93e-34. A bound

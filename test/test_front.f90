@@ -12,7 +12,7 @@ module test_front
     use sphere_row_scene_keys, only: add_scene_keys, scene_from_cli
     use sphere_row_read, only: read_real, read_int, read_reals, is_real_text, is_int_text, &
         printable
-    use sphere_row_format, only: short_text
+    use sphere_row_format, only: short_text, real_text, number_text_length
     use sphere_row_error, only: input_error_t => error_t
     use testsuite, only: error_t, unittest_t, new_unittest, check, read_text, count_lines
     use test_cli, only: program_path
@@ -45,6 +45,7 @@ contains
             new_unittest("real_syntax", test_real_syntax), &
             new_unittest("int_syntax", test_int_syntax), &
             new_unittest("printable_and_short_text", test_printable), &
+            new_unittest("real_text_as_formatted_write", test_real_text), &
             new_unittest("help_from_registry", test_help) &
             ]
     end function collect_front
@@ -567,6 +568,65 @@ contains
         call check(error, short_text(huge(1.0_qp), 3, "down") == "1.18e4932", &
             "huge rounded down: "//short_text(huge(1.0_qp), 3, "down"))
     end subroutine test_printable
+
+    !> real_text, made without formatted I/O, gives the very text of Fortran's
+    !> ES edit descriptor that it stands for: over the whole range of real128
+    !> (random significands and exponents, subnormals), edge values (0, -0,
+    !> huge, the smallest subnormal, the two sides of 1e99 and 1e-99 where the
+    !> exponent gets four places) and exact ties of the rounding (k + 1/2,
+    !> 0.125: to even), at 1 to 40 significant digits.
+    subroutine test_real_text(error)
+        type(error_t), allocatable, intent(out) :: error
+        integer, parameter :: places(*) = [1, 2, 3, 4, 7, 17, 33, 34, 35, 40]
+        real(qp), allocatable :: xs(:)
+        real(qp) :: u, v
+        integer :: i, j, wrong, seed_size
+        integer, allocatable :: seed(:)
+        character(len=number_text_length) :: got
+        character(len=:), allocatable :: want, first
+        integer :: length
+        xs = [0.0_qp, -0.0_qp, huge(1.0_qp), -huge(1.0_qp), tiny(1.0_qp), &
+            tiny(1.0_qp)*epsilon(1.0_qp), 1.0e99_qp, nearest(1.0e99_qp, -1.0_qp), &
+            1.0e-99_qp, nearest(1.0e-99_qp, 1.0_qp), 0.125_qp, 0.375_qp, 2.5_qp, 9.5_qp, &
+            99.5_qp, 0.1_qp, 1.0_qp/3, 9.999999999999999999999999999999999e5_qp, &
+            [(real(i, qp) + 0.5_qp, i=0, 40)], [(2.0_qp**i, i=-120, 120, 7)]]
+        call random_seed(size=seed_size)
+        seed = [(7919*i + 12, i=1, seed_size)]
+        call random_seed(put=seed)
+        do i = 1, 3000
+            call random_number(u)
+            call random_number(v)
+            xs = [xs, sign(scale(0.5_qp + u/2, nint(-16500 + v*32884)), u - 0.5_qp)]
+        end do
+        wrong = 0
+        first = ""
+        do i = 1, size(xs)
+            do j = 1, size(places)
+                call real_text(xs(i), places(j), got, length)
+                want = es_write(xs(i), places(j))
+                if (got(:length) == want) cycle
+                wrong = wrong + 1
+                if (wrong == 1) first = got(:length)//" against "//want
+            end do
+        end do
+        call check(error, wrong == 0, itoa(wrong)//" of "//itoa(size(xs)*size(places))// &
+            " texts differ, first "//first)
+    contains
+        !> The ES text that real_text stands for, by a formatted write.
+        function es_write(x, digits) result(text)
+            real(qp), intent(in) :: x
+            integer, intent(in) :: digits
+            character(len=:), allocatable :: text
+            character(len=80) :: buf
+            character(len=40) :: form
+            integer :: ew
+            ew = 2
+            if (x /= 0.0_qp .and. (abs(x) >= 1.0e99_qp .or. abs(x) <= 1.0e-99_qp)) ew = 4
+            write (form, "('(es', i0, '.', i0, 'e', i0, ')')") digits + ew + 8, digits - 1, ew
+            write (buf, form) x
+            text = trim(adjustl(buf))
+        end function es_write
+    end subroutine test_real_text
 
     !> `--help` lists every registered key with its default and range.
     subroutine test_help(error)
