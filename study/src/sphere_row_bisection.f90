@@ -59,12 +59,15 @@ contains
 
     !> `bisect` with its next tests run side by side, one per OpenMP thread:
     !> the midpoint, then the midpoints of the halves it may leave, level by
-    !> level, as many as there are threads. The walk down that tree takes
-    !> bisect's steps, so lo and hi end bit for bit where bisect leaves them,
-    !> on any number of threads; the tests off its path are thrown away.
-    !> Worth it where each test is long (a run of thousands of collisions);
-    !> `below` must be safe to call on several threads at once. Called on a
-    !> thread of a parallel region, it is bisect (no threads to spare).
+    !> level, as many as there are threads, the half on the side of the last
+    !> step first (bisecting towards a change, the steps tend to run in
+    !> stretches to one side; on two threads, the one half tested). The walk
+    !> down that tree takes bisect's steps, so lo and hi end bit for bit where
+    !> bisect leaves them, on any number of threads; the tests off its path
+    !> are thrown away. Worth it where each test is long (a run of thousands
+    !> of collisions); `below` must be safe to call on several threads at
+    !> once. Called on a thread of a parallel region, it is bisect (no
+    !> threads to spare).
     subroutine bisect_ahead(below, lo, hi, width, max_steps)
         procedure(side_fn) :: below
         real(qp), intent(inout) :: lo, hi
@@ -72,13 +75,17 @@ contains
         integer, intent(in) :: max_steps
         real(qp), allocatable :: a(:), b(:), mid(:)
         logical, allocatable :: tested(:), side(:)
+        logical :: last
         integer :: nodes, k, step
         nodes = 1
         !$ if (.not. omp_in_parallel()) nodes = max(1, omp_get_max_threads())
-        ! node k brackets [a(k), b(k)]; node 2k is the half above its midpoint
-        ! (left when below() holds there), node 2k+1 the half below it
+        ! node k brackets [a(k), b(k)]; node 2k is the half of it left if
+        ! below() at its midpoint equals `last`, the side of the last step
+        ! taken (the half above the midpoint if that is true), node 2k+1 the
+        ! other half
         allocate (a(nodes), b(nodes), mid(nodes), tested(nodes), side(nodes))
         step = 0
+        last = .true.
         do
             a(1) = lo
             b(1) = hi
@@ -86,8 +93,8 @@ contains
                 if (k > 1) then
                     tested(k) = tested(k/2)
                     if (.not. tested(k)) cycle
-                    a(k) = merge(mid(k/2), a(k/2), mod(k, 2) == 0)
-                    b(k) = merge(b(k/2), mid(k/2), mod(k, 2) == 0)
+                    a(k) = merge(mid(k/2), a(k/2), (mod(k, 2) == 0) .eqv. last)
+                    b(k) = merge(b(k/2), mid(k/2), (mod(k, 2) == 0) .eqv. last)
                 end if
                 mid(k) = 0.5_qp*(a(k) + b(k))
                 tested(k) = b(k) - a(k) > width .and. mid(k) > a(k) .and. mid(k) < b(k)
@@ -103,12 +110,12 @@ contains
                 step = step + 1
                 if (side(k)) then
                     lo = mid(k)
-                    k = 2*k
                 else
                     hi = mid(k)
-                    k = 2*k + 1
                 end if
+                k = 2*k + merge(0, 1, side(k) .eqv. last)
             end do
+            last = side(k/2)
         end do
     end subroutine bisect_ahead
 
