@@ -29,10 +29,10 @@ program c12_b2
         !> Sphere p hit once (see single_hit_of); a listable sequence's fingerprint (else 0).
         logical :: single_hit = .false.
         integer(8) :: hash = 0
-        !> Its row of b2_velocities.tsv.
-        type(row_t) :: row
     end type point_t
     type(point_t), allocatable :: points(:)
+    !> The points' rows of b2_velocities.tsv.
+    type(row_t), allocatable :: rows(:)
     type(cli_t) :: cli
     character(len=:), allocatable :: out, header
     character(len=300) :: msg
@@ -86,7 +86,7 @@ contains
     !> compared and formatted in parallel (OpenMP); the rows are written and
     !> counted in order, so the tables do not depend on the threads.
     subroutine tabulate()
-        allocate (points(n_grid))
+        allocate (points(n_grid), rows(n_grid))
         call run_grid()
         allocate (seen(0))
         max_diff = 0
@@ -105,7 +105,7 @@ contains
                 contiguous = .false.
             end if
         end do
-        call write_rows(unit, points%row)
+        call write_rows(unit, rows)
         close (unit)
         close (unit_forms)
     end subroutine tabulate
@@ -141,7 +141,7 @@ contains
                     pt%single_hit = single_hit_of(pt%pairs)
                     if (size(pt%pairs) <= max_listed) pt%hash = sequence_hash(pt%pairs)
                 end if
-                call format_row(pt, mine%e)
+                call format_row(pt, mine%e, rows(k))
             end associate
         end do
         !$omp end parallel do
@@ -149,25 +149,26 @@ contains
 
     !> The row of b2_velocities.tsv of the point at e_pt: e, count, status, final
     !> velocities, difference from the polynomials and single-hit closed form.
-    subroutine format_row(pt, e_pt)
-        type(point_t), intent(inout) :: pt
+    subroutine format_row(pt, e_pt, row)
+        type(point_t), intent(in) :: pt
         real(qp), intent(in) :: e_pt
+        type(row_t), intent(inout) :: row
         integer :: q
-        call pt%row%add(e_pt)
-        call pt%row%add(pt%n)
-        call pt%row%add_status(pt%status)
+        call row%add(e_pt)
+        call row%add(pt%n)
+        call row%add_status(pt%status)
         do q = 1, p
-            call pt%row%add(pt%v(q))
+            call row%add(pt%v(q))
         end do
         if (pt%status /= status_normal) then
-            call pt%row%add("-")
-            call pt%row%add("-")
+            call row%add("-")
+            call row%add("-")
         else
-            call pt%row%add(pt%diff)
+            call row%add(pt%diff)
             if (pt%single_hit) then
-                call pt%row%add(single_hit_v(e_pt))
+                call row%add(single_hit_v(e_pt))
             else
-                call pt%row%add("-")
+                call row%add("-")
             end if
         end if
     end subroutine format_row
