@@ -570,21 +570,22 @@ contains
     end subroutine test_printable
 
     !> real_text, made without formatted I/O, gives the very text of Fortran's
-    !> ES edit descriptor that it stands for: over the whole range of real128
-    !> (random significands and exponents, subnormals), edge values (0, -0,
-    !> huge, the smallest subnormal, the two sides of 1e99 and 1e-99 where the
-    !> exponent gets four places) and exact ties of the rounding (k + 1/2,
-    !> 0.125: to even), at 1 to 40 significant digits.
+    !> ES edit descriptor that it stands for: random significands with binary
+    !> exponents up to +-1100 (beyond 1e+-300), edge values (0, -0, huge, the
+    !> smallest subnormal, the two sides of 1e99 and 1e-99 where the exponent
+    !> gets four places) and exact ties of the rounding (k + 1/2, 0.125: to
+    !> even), at 1 to 40 significant digits; and, at 1, 17 and 34 digits,
+    !> random numbers over the whole range of real128, subnormals too (whose
+    !> exact digits, up to some 11,600 of them, take up to a millisecond).
     subroutine test_real_text(error)
         type(error_t), allocatable, intent(out) :: error
-        integer, parameter :: places(*) = [1, 2, 3, 4, 7, 17, 33, 34, 35, 40]
-        real(qp), allocatable :: xs(:)
+        integer, parameter :: places(*) = [1, 2, 3, 4, 7, 17, 33, 34, 35, 40], &
+            wide_places(*) = [1, 17, 34]
+        real(qp), allocatable :: xs(:), wide(:)
         real(qp) :: u, v
-        integer :: i, j, wrong, seed_size
+        integer :: i, j, wrong, seed_size, texts
         integer, allocatable :: seed(:)
-        character(len=number_text_length) :: got
-        character(len=:), allocatable :: want, first
-        integer :: length
+        character(len=:), allocatable :: first
         xs = [0.0_qp, -0.0_qp, huge(1.0_qp), -huge(1.0_qp), tiny(1.0_qp), &
             tiny(1.0_qp)*epsilon(1.0_qp), 1.0e99_qp, nearest(1.0e99_qp, -1.0_qp), &
             1.0e-99_qp, nearest(1.0e-99_qp, 1.0_qp), 0.125_qp, 0.375_qp, 2.5_qp, 9.5_qp, &
@@ -593,25 +594,46 @@ contains
         call random_seed(size=seed_size)
         seed = [(7919*i + 12, i=1, seed_size)]
         call random_seed(put=seed)
+        allocate (wide(300))
         do i = 1, 3000
             call random_number(u)
             call random_number(v)
-            xs = [xs, sign(scale(0.5_qp + u/2, nint(-16500 + v*32884)), u - 0.5_qp)]
+            xs = [xs, sign(scale(0.5_qp + u/2, nint(-1100 + v*2200)), u - 0.5_qp)]
+            if (i > size(wide)) cycle
+            wide(i) = sign(scale(0.5_qp + v/2, nint(-16500 + u*32884)), v - 0.5_qp)
         end do
         wrong = 0
+        texts = 0
         first = ""
         do i = 1, size(xs)
             do j = 1, size(places)
-                call real_text(xs(i), places(j), got, length)
-                want = es_write(xs(i), places(j))
-                if (got(:length) == want) cycle
-                wrong = wrong + 1
-                if (wrong == 1) first = got(:length)//" against "//want
+                call compare(xs(i), places(j))
             end do
         end do
-        call check(error, wrong == 0, itoa(wrong)//" of "//itoa(size(xs)*size(places))// &
+        do i = 1, size(wide)
+            do j = 1, size(wide_places)
+                call compare(wide(i), wide_places(j))
+            end do
+        end do
+        call check(error, wrong == 0, itoa(wrong)//" of "//itoa(texts)// &
             " texts differ, first "//first)
     contains
+        !> real_text of x at `digits` against the formatted write; a text
+        !> that differs is counted (the first kept).
+        subroutine compare(x, digits)
+            real(qp), intent(in) :: x
+            integer, intent(in) :: digits
+            character(len=number_text_length) :: got
+            character(len=:), allocatable :: want
+            integer :: length
+            call real_text(x, digits, got, length)
+            want = es_write(x, digits)
+            texts = texts + 1
+            if (got(:length) == want) return
+            wrong = wrong + 1
+            if (wrong == 1) first = got(:length)//" against "//want
+        end subroutine compare
+
         !> The ES text that real_text stands for, by a formatted write.
         function es_write(x, digits) result(text)
             real(qp), intent(in) :: x
