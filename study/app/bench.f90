@@ -197,8 +197,9 @@ contains
     end subroutine in_turn
 
     !> `command` on one thread, on two, and as two one-thread copies at once, in
-    !> rounds (4 `pairs` under 0.5 s, 2 under 1.5 s, else `pairs`): medians of the times and
-    !> of the ratios 1/2 threads and 2 (1 thread)/(both copies); `fastest`: both, of the fastest.
+    !> rounds (4 `pairs` under 0.5 s, 2 under 1.5 s, else `pairs`): medians of the
+    !> times and of the ratios 1/2 threads and 2 (1 thread)/(both copies); `fastest`:
+    !> the two ratios of the rounds' fastest times.
     subroutine one_against_two(command, runs, t_one, t_two, speedup, ceiling, fastest, rounds)
         character(len=*), intent(in) :: command, runs
         real(qp), intent(out) :: t_one, t_two, speedup, ceiling, fastest(2)
