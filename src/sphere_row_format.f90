@@ -152,19 +152,18 @@ contains
         high = aint(scale(m, -56))
         low = int(m - scale(high, 56), int64)
         nl = 0
-        call limbs_add(limb, nl, int(high, int64))
-        call limbs_times(limb, nl, 2_int64**28)
-        call limbs_times(limb, nl, 2_int64**28)
-        call limbs_add(limb, nl, low)
+        call limbs_times_plus(limb, nl, 1_int64, int(high, int64))
+        call limbs_times_plus(limb, nl, 2_int64**28, 0_int64)
+        call limbs_times_plus(limb, nl, 2_int64**28, low)
         shift = min(k, 0)
         do while (k > 0)
             step = min(k, 29)
-            call limbs_times(limb, nl, 2_int64**step)
+            call limbs_times_plus(limb, nl, 2_int64**step, 0_int64)
             k = k - step
         end do
         do while (k < 0)
             step = min(-k, 13)
-            call limbs_times(limb, nl, 5_int64**step)
+            call limbs_times_plus(limb, nl, 5_int64**step, 0_int64)
             k = k + step
         end do
         ! the digits of the integer, from its most significant limb
@@ -194,15 +193,16 @@ contains
         power = power + 1
     end subroutine decimal_digits
 
-    !> Limbs 1..nl of an integer in base 10^9 times f (f < 2^31, so that no
-    !> product leaves int64).
-    pure subroutine limbs_times(limb, nl, f)
+    !> Limbs 1..nl of an integer in base 10^9 times f, plus a (f < 2^31 and
+    !> 0 <= a < 2^62, so that no product and carry leaves int64); with nl = 0
+    !> the integer a.
+    pure subroutine limbs_times_plus(limb, nl, f, a)
         integer(int64), intent(inout) :: limb(:)
         integer, intent(inout) :: nl
-        integer(int64), intent(in) :: f
+        integer(int64), intent(in) :: f, a
         integer(int64) :: carry, t
         integer :: j
-        carry = 0
+        carry = a
         do j = 1, nl
             t = limb(j)*f + carry
             limb(j) = mod(t, limb_base)
@@ -213,28 +213,7 @@ contains
             limb(nl) = mod(carry, limb_base)
             carry = carry/limb_base
         end do
-    end subroutine limbs_times
-
-    !> Limbs 1..nl of an integer in base 10^9 plus a >= 0.
-    pure subroutine limbs_add(limb, nl, a)
-        integer(int64), intent(inout) :: limb(:)
-        integer, intent(inout) :: nl
-        integer(int64), intent(in) :: a
-        integer(int64) :: carry, t
-        integer :: j
-        carry = a
-        j = 0
-        do while (carry > 0)
-            j = j + 1
-            if (j > nl) then
-                nl = j
-                limb(j) = 0
-            end if
-            t = limb(j) + carry
-            limb(j) = mod(t, limb_base)
-            carry = t/limb_base
-        end do
-    end subroutine limbs_add
+    end subroutine limbs_times_plus
 
     !> The nine digits of a limb appended to text(:length) (a leading limb
     !> without its leading zeros).
