@@ -34,6 +34,7 @@ contains
             new_unittest("long_rows_answer", test_long_rows), &
             new_unittest("cascade_jump_equals_stepping", test_cascade_jump), &
             new_unittest("shuttle_in_touching_row", test_shuttle_row), &
+            new_unittest("touching_block_in_the_engines_order", test_block_in_order), &
             new_unittest("quiet_cascade_matches_fallback", test_quiet_cascade) &
             ]
     end function collect_collapse
@@ -451,6 +452,48 @@ contains
             if (allocated(error)) return
         end do
     end subroutine test_shuttle_row
+
+    !> A row of heavy and light spheres, two runs of them touching (survey row
+    !> 346): the box of ratios proves its blocks merge only over the
+    !> collisions the engine's order at equal times can choose, not in every
+    !> order. With that proof it ends within 100 collisions, all fifteen
+    !> spheres at the mean velocity m1 v0/sum(m), by the scan and by the
+    !> calendar (without it the engine stepped 428,048 collisions, to the
+    !> same velocities within 2e-34).
+    subroutine test_block_in_order(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(scene_t) :: scene
+        type(run_t) :: run
+        integer :: stat, way
+        character(len=200) :: msg
+        do way = 1, 2
+            call scene_init(scene, stat, msg, p=15, e=0.003709845244884490966796875_qp, &
+                masses=[0.13536122608110779005291202298197616_qp, &
+                0.11831054596059376767302298886169143_qp, &
+                0.01057420493754314525753277090820565_qp, &
+                40.232631256582536422306283563736336_qp, 0.9796077434281979111323641027742356_qp, &
+                0.23179258858393702237413343400802526_qp, 0.65818720923290397496605820024264_qp, &
+                216.74155763328987733368323668134387_qp, 130.8612844158687474007286114344233_qp, &
+                0.00871191957213879878910863054974617_qp, 5.761952033271788179603141502429122_qp, &
+                55.63049621700305159345780051514636_qp, &
+                0.0017209402012910136660835421488644955_qp, &
+                0.00359290067955444187678005091451435_qp, 621.6160970944672248469381518247909_qp], &
+                gaps=[0.513140504248440265655517578125_qp, 0.0_qp, 0.0_qp, 0.0_qp, 0.0_qp, 0.0_qp, &
+                0.0_qp, 0.1330031114630401134490966796875_qp, 0.0_qp, 0.0_qp, 0.0_qp, 0.0_qp, &
+                1.8113962151110172271728515625_qp, 0.72596852295100688934326171875_qp])
+            if (way == 2) scene%calendar_from = 2
+            call simulate(scene, run)
+            call check(error, run%status == status_collapsed .and. run%n < 100, &
+                "touching block in the engine's order: no collapse within 100 collisions")
+            if (allocated(error)) return
+            call check(error, run%collapses > 0 .and. run%closed_limits == run%collapses, &
+                "touching block in the engine's order: a limit not taken in closed form")
+            if (allocated(error)) return
+            call check(error, all(abs(run%v - scene%m(1)/sum(scene%m)) <= 1.0e3_qp*eps), &
+                "touching block in the engine's order: not every sphere at the mean velocity")
+            if (allocated(error)) return
+        end do
+    end subroutine test_block_in_order
 
     !> An equal-mass row whose spheres arrive one by one at a growing touching
     !> block: once a limit has closed the block's gaps, each arrival sets off a

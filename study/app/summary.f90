@@ -124,7 +124,9 @@ contains
             "e uniform in [0, 1], a fifth of the gaps closed) run to their end with the "// &
             "collapse limits in closed form (a plastic cascade pooled at e = 0, a cascade "// &
             "through touching spheres proven to merge by an invariant box of its momentum "// &
-            "ratios, or by its sequence in the engine's order at equal times settling into "// &
+            "ratios (against collisions in any order, or, where its gaps are exactly "// &
+            "closed, those the engine's order at equal times can choose), or by its "// &
+            "sequence in the engine's order at equal times settling into "// &
             "a contracting pattern of every contact (a shuttle of part of the block jumped "// &
             "by powers of its period's map) or, in a block whose gaps are exactly "// &
             "closed, by its rates all falling below the insignificant rate within the "// &
