@@ -10,6 +10,7 @@
 !> w_(c+1), the kicks of (6). Which contact collides next is the engine's
 !> rule at equal times: the largest w_c > 0, the leftmost of equals.
 module sphere_row_cascade
+    use, intrinsic :: iso_fortran_env, only: int64
     use sphere_row_kinds, only: dp
     implicit none
     private
@@ -19,10 +20,11 @@ module sphere_row_cascade
     integer, parameter :: cascade_kind = dp
 
     !> A try: its collisions at least and its work (collisions times contacts)
-    !> at most, the sequence length at which a period is first looked for, and
-    !> the periods a certificate runs.
+    !> at most, doubled for each try before it that ran out of work (at
+    !> most order_doublings times), the sequence length at which a period
+    !> is first looked for, and the periods a certificate runs.
     integer, parameter :: order_steps_least = 16384, order_work = 2**22, &
-        order_first_check = 1024, order_probes = 6
+        order_doublings = 4, order_first_check = 1024, order_probes = 6
     !> Part of the smallest decision margin that the remaining drift of the
     !> direction may use up (as for the engine's certified cycles).
     real(dp), parameter :: drift_safety = 1.0e-2_dp
@@ -105,12 +107,23 @@ contains
     !> collisions shows its period in few entries. The sequence is searched
     !> for a period after order_first_check, twice as many, ... entries, and
     !> a period found is checked by pattern_contracts: a numerical
-    !> certificate. `steps` returns the work done, in collisions.
-    pure subroutine ordered_cascade_merges(kl, kr, rates, e, quiet, quiet_merge, merges, steps, &
-        quiet_end)
+    !> certificate. `steps` returns the work done, in collisions, and
+    !> `spent` whether the try ended because its work ran out (not the bound
+    !> past the engine's end of its cascade, which more work would not move;
+    !> that bound is a multiple of `steps`, in 64 bits). `spent_before`
+    !> is the number of tries that ran out since the engine last took a
+    !> touching block's limit: each doubles the work this one may do (at
+    !> most order_doublings times), so that a cascade whose rates fall
+    !> slowly (light spheres between heavy ones: 10^5 collisions and more a
+    !> decade) is run far enough by a later try, while the engine's wait
+    !> between tries, in proportion to their work, keeps their share of its
+    !> time.
+    pure subroutine ordered_cascade_merges(kl, kr, rates, e, quiet, quiet_merge, spent_before, &
+        merges, steps, quiet_end, spent)
         real(dp), intent(in) :: kl(:), kr(:), rates(:), e, quiet
         logical, intent(in) :: quiet_merge
-        logical, intent(out) :: merges, quiet_end
+        integer, intent(in) :: spent_before
+        logical, intent(out) :: merges, quiet_end, spent
         integer, intent(out) :: steps
         type(cascade_t) :: cs
         real(dp) :: w(size(rates)), scale, least, slack
@@ -120,11 +133,12 @@ contains
         integer :: n, most, check, period, c, items, per, id, cost, st
         merges = .false.
         quiet_end = .false.
+        spent = .false.
         steps = 0
         n = size(rates)
         if (n < 2 .or. size(kl) /= n .or. size(kr) /= n) return
         if (.not. maxval(abs(rates)) > 0) return
-        most = max(order_steps_least, order_work/n)
+        most = max(order_steps_least, order_work*2**min(max(spent_before, 0), order_doublings)/n)
         ! (one more: a jump adds a second entry in the last step)
         allocate (seq(most + 1), stat=st)
         if (st /= 0) return
@@ -153,7 +167,8 @@ contains
                     ! the engine merges by its fallback here, after about
                     ! `steps` collisions: a pattern is looked for a while
                     ! longer, for a bounded multiple of that work
-                    if (stopped) most = min(most, max(quiet_more*steps, 2*order_first_check))
+                    if (stopped) most = int(min(int(most, int64), &
+                        max(quiet_more*int(steps, int64), int(2*order_first_check, int64))))
                     ! (the engine stops short of a merge if an opening rate
                     ! is significant: the try goes on without the rule)
                     watch = .false.
@@ -190,6 +205,7 @@ contains
             call pattern_contracts(w, cs, seq(items - period + 1:items), merges)
             if (merges) return
         end do
+        spent = steps >= most .and. .not. stopped
         ! a last look at the whole sequence: a certified pattern is the better
         ! reason to merge
         call cascade_period(seq(items/2 + 1:items), period)
