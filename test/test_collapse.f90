@@ -36,6 +36,7 @@ contains
             new_unittest("shuttle_in_touching_row", test_shuttle_row), &
             new_unittest("touching_block_in_the_engines_order", test_block_in_order), &
             new_unittest("slow_cascade_tried_longer", test_slow_cascade), &
+            new_unittest("block_struck_again_and_again", test_struck_again), &
             new_unittest("quiet_cascade_matches_fallback", test_quiet_cascade) &
             ]
     end function collect_collapse
@@ -511,6 +512,30 @@ contains
             1.9548409809358417987823486328125_qp, 1.1849128655157983303070068359375_qp])
         call check_row_merges(scene, 100000, .false., "slow cascade", error)
     end subroutine test_slow_cascade
+
+    !> Survey row 611 (p = 8, masses from 0.0041 to 84): a touching block
+    !> struck again and again while the collisions around it accumulate,
+    !> each strike's cascade proven to merge by a try. The engine waits less
+    !> after a try that merged than after one that did not, so the 302
+    !> limits (all in closed form) come within 8000 collisions, where
+    !> 17,552 were needed with the same wait after both; every sphere ends
+    !> at m_1 v_0/sum(m).
+    subroutine test_struck_again(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(scene_t) :: scene
+        integer :: stat
+        character(len=200) :: msg
+        call scene_init(scene, stat, msg, p=8, e=0.7235887139104306697845458984375_qp, &
+            masses=[84.2225754518696328446196530753553_qp, &
+            1.2470008848200654775135824565122673_qp, 53.822995588930203228747057040036944_qp, &
+            0.1984773708827939034255869074874105_qp, 0.267053330167783381661119029270176_qp, &
+            45.541307032956864151567802911176224_qp, 0.004071396051488634706363605452575331_qp, &
+            0.5441525572792555571998111448202732_qp], &
+            gaps=[0.0_qp, 0.6683402056805789470672607421875_qp, 1.6220443584024906158447265625_qp, &
+            0.5771956783719360828399658203125_qp, 0.154092319309711456298828125_qp, &
+            1.5614892640151083469390869140625_qp, 1.15029406361281871795654296875_qp])
+        call check_row_merges(scene, 8000, .true., "block struck again and again", error)
+    end subroutine test_struck_again
 
     !> Run `scene` by the scan and by the calendar: it must end collapsed
     !> within `most` collisions (every limit in closed form if `closed_only`),
