@@ -116,8 +116,8 @@ contains
     !> most order_doublings times), so that a cascade whose rates fall
     !> slowly (light spheres between heavy ones: 10^5 collisions and more a
     !> decade) is run far enough by a later try, while the engine's wait
-    !> between tries, in proportion to their work, keeps their share of its
-    !> time.
+    !> before it tries the same block again, in proportion to the work, keeps
+    !> the tries' share of its time bounded.
     pure subroutine ordered_cascade_merges(kl, kr, rates, e, quiet, quiet_merge, spent_before, &
         merges, steps, quiet_end, spent)
         real(dp), intent(in) :: kl(:), kr(:), rates(:), e, quiet

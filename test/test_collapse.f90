@@ -37,6 +37,7 @@ contains
             new_unittest("touching_block_in_the_engines_order", test_block_in_order), &
             new_unittest("slow_cascade_tried_longer", test_slow_cascade), &
             new_unittest("block_struck_again_and_again", test_struck_again), &
+            new_unittest("wait_of_one_block_holds_no_other", test_other_block), &
             new_unittest("quiet_cascade_matches_fallback", test_quiet_cascade) &
             ]
     end function collect_collapse
@@ -536,6 +537,50 @@ contains
             1.5614892640151083469390869140625_qp, 1.15029406361281871795654296875_qp])
         call check_row_merges(scene, 8000, .true., "block struck again and again", error)
     end subroutine test_struck_again
+
+    !> Survey row 849 (p = 11, masses from 0.0066 to 514): a try of spheres
+    !> 1..5 runs out of work at collision 299, and spheres 6..11, struck,
+    !> start a cascade that a try proves to merge. A block's wait after its
+    !> try does not hold back the try of another block: the row ends within
+    !> 2000 collisions (with one wait for every block, the try of 6..11 came
+    !> only after the 65,536 collisions of that wait), every limit in closed
+    !> form, momentum kept and no pair closing, by the scan and by the
+    !> calendar.
+    subroutine test_other_block(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(scene_t) :: scene
+        type(run_t) :: run
+        integer :: stat, way
+        character(len=200) :: msg
+        character(len=*), parameter :: ways(2) = ["scan    ", "calendar"]
+        do way = 1, size(ways)
+            call scene_init(scene, stat, msg, p=11, e=0.616398501209914684295654296875_qp, &
+                masses=[1.5242985519090533553545859966592126_qp, &
+                0.05349623918334792556377297082652699_qp, &
+                0.24055060901275235820877548645329352_qp, &
+                513.960850572897814374317280643397_qp, 105.85733904882934288600259506825749_qp, &
+                362.1551682619556386830936208704375_qp, 0.1912721895387610396298032531415859_qp, &
+                1.3049340809432839459640274620191383_qp, &
+                0.006629293625092055190649798905934446_qp, &
+                44.30901419187568626760481701229255_qp, 69.93804131817065415559862380903653_qp], &
+                gaps=[0.2680184864439070224761962890625_qp, 1.3540451661683619022369384765625_qp, &
+                1.153760363347828388214111328125_qp, 1.2885074033401906490325927734375_qp, &
+                0.0_qp, 0.8046814664267003536224365234375_qp, &
+                0.1088909055106341838836669921875_qp, 0.0_qp, &
+                0.767450160346925258636474609375_qp, 1.8842644342221319675445556640625_qp])
+            if (way == 2) scene%calendar_from = 2
+            scene%max_collisions = 2000
+            call simulate(scene, run)
+            call check(error, run%status == status_collapsed .and. run%n < 2000 .and. &
+                run%closed_limits == run%collapses, &
+                "other block ("//trim(ways(way))//"): no collapse in closed form within 2000")
+            if (allocated(error)) return
+            call check(error, abs(momentum(scene, run%v) - scene%m(1)) <= &
+                1.0e3_qp*eps*sum(scene%m) .and. all(run%dy >= -scene%tol*scene%v0), &
+                "other block ("//trim(ways(way))//"): momentum, or a pair still closing")
+            if (allocated(error)) return
+        end do
+    end subroutine test_other_block
 
     !> Run `scene` by the scan and by the calendar: it must end collapsed
     !> within `most` collisions (every limit in closed form if `closed_only`),
