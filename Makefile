@@ -133,7 +133,8 @@ callgrind: $(BUILD_STAMP) ## quad operations per collision of c2's lean path (va
 # never imports a per-kind engine module but the umbrella's names; the root
 # package links no GSL.
 CORE := src/sphere_row_kinds.f90 src/sphere_row_status.f90 src/sphere_row_format.f90 \
-        src/sphere_row_cascade.f90 src/sphere_row_engine.inc $(wildcard src/sphere_row_engine_*.f90) \
+        src/sphere_row_cascade.f90 src/sphere_row_pattern.inc $(wildcard src/sphere_row_pattern_*.f90) \
+        src/sphere_row_engine.inc $(wildcard src/sphere_row_engine_*.f90) \
         src/sphere_row_auto.f90
 ABOVE := $(filter-out src/sphere_row.f90 $(CORE),$(wildcard src/*.f90 app/*.f90 test/*.f90 \
          study/*/*.f90 study/*/*.inc))

@@ -2,16 +2,18 @@
 !> engine's order at equal times, and the numerical certificate that it merges.
 !>
 !> It only decides whether a block merges (the engine takes the limit in its
-!> own kind), so it is written once, in double precision, for every kind.
-!>
-!> The block's collisions are all at one time; a collision at contact c moves
-!> momentum through c alone. On the approach rates w (w_c > 0: closing) it
-!> turns w_c into -e w_c and adds kl_c w_c to w_(c-1) and kr_c w_c to
-!> w_(c+1), the kicks of (6). Which contact collides next is the engine's
-!> rule at equal times: the largest w_c > 0, the leftmost of equals.
+!> own kind), so it is run in double precision for every kind, on the
+!> collisions and patterns of sphere_row_pattern.inc (their rule and map are
+!> described there), and a pattern's certificate that double precision
+!> cannot resolve is run again in the finer kind of sphere_row_pattern_fine.
 module sphere_row_cascade
     use, intrinsic :: iso_fortran_env, only: int64
     use sphere_row_kinds, only: dp
+    use sphere_row_pattern_dp, only: cascade_t, jump_period_most, jump_levels, cascade_start, &
+        rule_choice, rescale, cascade_collide, pattern_window, period_map, pattern_holds, &
+        pattern_contracts
+    use sphere_row_pattern_fine, only: fine_t => cascade_t, fine_kind => pattern_kind, &
+        fine_start => cascade_start, fine_contracts => pattern_contracts
     implicit none
     private
     public :: ordered_cascade_merges, cascade_jump, cascade_kind
@@ -21,13 +23,10 @@ module sphere_row_cascade
 
     !> A try: its collisions at least and its work (collisions times contacts)
     !> at most, doubled for each try before it that ran out of work (at
-    !> most order_doublings times), the sequence length at which a period
-    !> is first looked for, and the periods a certificate runs.
+    !> most order_doublings times), and the sequence length at which a period
+    !> is first looked for.
     integer, parameter :: order_steps_least = 16384, order_work = 2**22, &
-        order_doublings = 4, order_first_check = 1024, order_probes = 6
-    !> Part of the smallest decision margin that the remaining drift of the
-    !> direction may use up (as for the engine's certified cycles).
-    real(dp), parameter :: drift_safety = 1.0e-2_dp
+        order_doublings = 4, order_first_check = 1024
     !> A cascade that stops with every rate below the engine's insignificant
     !> one merges by the engine's fallback rule, if no choice on the way was
     !> closer than this many roundings per unit of work done.
@@ -37,30 +36,14 @@ module sphere_row_cascade
     !> (at least 2 order_first_check collisions): 256 leaves every row of the
     !> collapse survey as it was without the bound, 16 does not.
     integer, parameter :: quiet_more = 256
-    !> Jumps over a pattern repeated by part of the block: its longest period,
-    !> its widest window of contacts, the most doublings of its repeat count,
+    !> Jumps over a pattern repeated by part of the block (its longest period
+    !> and the most doublings of its repeat count are jump_period_most and
+    !> jump_levels of sphere_row_pattern.inc): its widest window of contacts,
     !> the most distinct jumps (pattern and count) a try records, and the
     !> whole periods a pattern runs before it is jumped (fewer: the search
     !> costs more than it saves on the many short repeats; measured by the
     !> collapse survey).
-    integer, parameter :: jump_period_most = 16, jump_window_most = 40, &
-        jump_levels = 30, jump_kinds_most = 256, jump_need = 8
-
-    !> A pattern of contacts repeated `times` times at once while the block's
-    !> other contacts wait.
-    type :: jump_t
-        integer :: length = 0, times = 0
-        integer :: contact(jump_period_most) = 0
-    end type jump_t
-
-    !> A block's kicks and restitution, and the jumps its sequence has taken:
-    !> entry -j of a sequence is jump j.
-    type :: cascade_t
-        real(dp), allocatable :: kl(:), kr(:)
-        real(dp) :: e = 0
-        integer :: jumps = 0
-        type(jump_t), allocatable :: jump(:)
-    end type cascade_t
+    integer, parameter :: jump_window_most = 40, jump_kinds_most = 256, jump_need = 8
 
 contains
 
@@ -106,7 +89,7 @@ contains
     !> count), so that a cascade that alternates such stretches with single
     !> collisions shows its period in few entries. The sequence is searched
     !> for a period after order_first_check, twice as many, ... entries, and
-    !> a period found is checked by pattern_contracts: a numerical
+    !> a period found is checked by pattern_merges: a numerical
     !> certificate. `steps` returns the work done, in collisions, and
     !> `spent` whether the try ended because its work ran out (not the bound
     !> past the engine's end of its cascade, which more work would not move;
@@ -202,14 +185,14 @@ contains
             check = 2*check
             call cascade_period(seq(items/2 + 1:items), period)
             if (period == 0) cycle
-            call pattern_contracts(w, cs, seq(items - period + 1:items), merges)
+            call pattern_merges(w, cs, seq(items - period + 1:items), merges)
             if (merges) return
         end do
         spent = steps >= most .and. .not. stopped
         ! a last look at the whole sequence: a certified pattern is the better
         ! reason to merge
         call cascade_period(seq(items/2 + 1:items), period)
-        if (period > 0) call pattern_contracts(w, cs, seq(items - period + 1:items), merges)
+        if (period > 0) call pattern_merges(w, cs, seq(items - period + 1:items), merges)
         if (merges .or. .not. (stopped .and. quiet_merge)) return
         ! the block merges by the engine's fallback rule if every choice on
         ! the way was clear (if one was not, the engine steps it)
@@ -239,75 +222,6 @@ contains
         times = min(id, 0)
         if (id > 0) times = cs%jump(id)%times
     end subroutine cascade_jump
-
-    !> A block's kicks and restitution, with room for `kinds` jumps (st /= 0:
-    !> no memory for them).
-    pure subroutine cascade_start(cs, kl, kr, e, kinds, st)
-        type(cascade_t), intent(out) :: cs
-        real(dp), intent(in) :: kl(:), kr(:), e
-        integer, intent(in) :: kinds
-        integer, intent(out) :: st
-        allocate (cs%kl(size(kl)), stat=st)
-        if (st /= 0) return
-        allocate (cs%kr(size(kr)), stat=st)
-        if (st /= 0) return
-        allocate (cs%jump(kinds), stat=st)
-        if (st /= 0) return
-        cs%kl = kl
-        cs%kr = kr
-        cs%e = e
-    end subroutine cascade_start
-
-    !> The contact c that collides next by the engine's rule at equal times
-    !> (the largest closing rate, the leftmost of equals), 0 if none closes,
-    !> and by how much it is the choice, relative to the largest rate: its
-    !> rate less the largest other rate, and at most its rate itself (0 for
-    !> a tie).
-    pure subroutine rule_choice(w, c, slack)
-        real(dp), intent(in) :: w(:)
-        integer, intent(out) :: c
-        real(dp), intent(out) :: slack
-        real(dp) :: wc, second, top
-        integer :: j
-        c = 0
-        wc = 0
-        second = -huge(wc)
-        top = 0
-        do j = 1, size(w)
-            top = max(top, abs(w(j)))
-            if (w(j) > wc) then
-                second = max(second, wc)
-                wc = w(j)
-                c = j
-            else
-                second = max(second, w(j))
-            end if
-        end do
-        slack = 0
-        if (c > 0) slack = min(wc, wc - second)/top
-    end subroutine rule_choice
-
-    !> Divide the rates w by their largest size and multiply scale by it.
-    pure subroutine rescale(w, scale)
-        real(dp), intent(inout) :: w(:)
-        real(dp), intent(inout) :: scale
-        real(dp) :: f
-        f = maxval(abs(w))
-        w = w/f
-        scale = scale*f
-    end subroutine rescale
-
-    !> A collision at contact c of the block, on its approach rates w.
-    pure subroutine cascade_collide(w, cs, c)
-        real(dp), intent(inout) :: w(:)
-        type(cascade_t), intent(in) :: cs
-        integer, intent(in) :: c
-        real(dp) :: wc
-        wc = w(c)
-        if (c > 1) w(c - 1) = w(c - 1) + cs%kl(c)*wc
-        if (c < size(w)) w(c + 1) = w(c + 1) + cs%kr(c)*wc
-        w(c) = -cs%e*wc
-    end subroutine cascade_collide
 
     !> After the latest entry of seq: for each period k, how many entries in
     !> a row have matched the entry k before (agree), and `per`, the shortest
@@ -402,56 +316,6 @@ contains
         if (id > 0) w = x
     end subroutine jump_ahead
 
-    !> The window a..b of the n contacts whose rates a pattern changes: its
-    !> own and their neighbours.
-    pure subroutine pattern_window(pattern, n, a, b)
-        integer, intent(in) :: pattern(:), n
-        integer, intent(out) :: a, b
-        a = max(1, minval(pattern) - 1)
-        b = min(n, maxval(pattern) + 1)
-    end subroutine pattern_window
-
-    !> The map of the rates on contacts a..b over one period of the pattern
-    !> (columns: the images of the unit rates).
-    pure subroutine period_map(cs, pattern, a, b, m)
-        type(cascade_t), intent(in) :: cs
-        integer, intent(in) :: pattern(:), a, b
-        real(dp), intent(out) :: m(:, :)
-        real(dp) :: u(size(cs%kl))
-        integer :: k, i
-        do k = 1, b - a + 1
-            u = 0
-            u(a + k - 1) = 1
-            do i = 1, size(pattern)
-                call cascade_collide(u, cs, pattern(i))
-            end do
-            m(:, k) = u(a:b)
-        end do
-    end subroutine period_map
-
-    !> Whether (`ok`) the rule chooses every collision of one period of the
-    !> pattern from the rates w, each with a positive slack; `slack` is the
-    !> smallest, relative to the largest rate at its choice.
-    pure subroutine pattern_holds(cs, w, pattern, ok, slack)
-        type(cascade_t), intent(in) :: cs
-        real(dp), intent(in) :: w(:)
-        integer, intent(in) :: pattern(:)
-        logical, intent(out) :: ok
-        real(dp), intent(out) :: slack
-        real(dp) :: u(size(w)), s
-        integer :: i, c
-        ok = .false.
-        slack = 1
-        u = w
-        do i = 1, size(pattern)
-            call rule_choice(u, c, s)
-            if (c /= pattern(i) .or. .not. s > 0) return
-            slack = min(slack, s)
-            call cascade_collide(u, cs, pattern(i))
-        end do
-        ok = .true.
-    end subroutine pattern_holds
-
     !> The entry of the jump (pattern, times) in cs%jump, added if new (0 if
     !> the table is full).
     pure subroutine record_jump(cs, pattern, times, id)
@@ -475,37 +339,6 @@ contains
         cs%jump(id)%times = times
         cs%jump(id)%contact(:l) = pattern
     end subroutine record_jump
-
-    !> A recorded jump taken again from the rates w: the pattern must hold
-    !> where it starts and where it ends (`ok`); `slack` is the smaller of the
-    !> two. Its map over `times` periods is applied by repeated squaring.
-    pure subroutine repeat_jump(cs, jp, w, slack, ok)
-        type(cascade_t), intent(in) :: cs
-        type(jump_t), intent(in) :: jp
-        real(dp), intent(inout) :: w(:)
-        real(dp), intent(out) :: slack
-        logical, intent(out) :: ok
-        real(dp), allocatable :: m(:, :)
-        real(dp) :: end_slack
-        integer :: a, b, t, st
-        associate (pattern => jp%contact(:jp%length))
-            call pattern_holds(cs, w, pattern, ok, slack)
-            if (.not. ok) return
-            call pattern_window(pattern, size(w), a, b)
-            allocate (m(b - a + 1, b - a + 1), stat=st)
-            ok = st == 0
-            if (.not. ok) return
-            call period_map(cs, pattern, a, b, m)
-            t = jp%times
-            do while (t > 0)
-                if (mod(t, 2) == 1) w(a:b) = matmul(m, w(a:b))
-                t = t/2
-                if (t > 0) m = matmul(m, m)
-            end do
-            call pattern_holds(cs, w, pattern, ok, end_slack)
-        end associate
-        slack = min(slack, end_slack)
-    end subroutine repeat_jump
 
     !> The period of the longest tail of seq that repeats itself at least three
     !> times (0 if none): with the prefix function of seq read backwards, the
@@ -539,79 +372,32 @@ contains
         end do
     end subroutine cascade_period
 
-    !> Run the pattern of entries (contacts, and jumps taken again by
-    !> repeat_jump) for order_probes periods from the approach rates w, and
-    !> ask whether it takes in every contact, chooses each of its collisions
-    !> by the engine's rule with a relative margin m > 0 (its rate positive
-    !> and larger than every other; in a jump, where it starts and where it
-    !> ends), contracts the rates each period (by lambda < 1) and settles
-    !> their direction, so that the drift still to come (the last change
-    !> times r/(1 - r) for a change that falls by r per period, or the
-    !> rounding's own once the change is down to it) is below drift_safety
-    !> times m. Then the pattern repeats for ever (as a cycle does): the rates
-    !> tend to 0 along the dominant direction of the period's map, at which
-    !> every choice holds with margin m, and every sphere to the block's mean
-    !> velocity. Within a jump the margins are checked at its two ends (and,
-    !> when it was first taken, at the points of its doubling search) and
-    !> assumed, not checked, to hold between them: they are linear in M^k w,
-    !> so they can change sign inside only if M's subdominant part of w still
-    !> counts after the jump_need periods run before it.
-    pure subroutine pattern_contracts(w, cs, pattern, merges)
+    !> Whether the pattern of entries repeats for ever from the rates w and
+    !> merges the block, by pattern_contracts in double precision or, where
+    !> that fails only because the drift of the direction is down to double
+    !> precision's rounding, which is too coarse for the pattern's margins
+    !> (a long pattern with a near tie), by pattern_contracts in the finer
+    !> kind from the same rates.
+    pure subroutine pattern_merges(w, cs, pattern, merges)
         real(dp), intent(in) :: w(:)
         type(cascade_t), intent(in) :: cs
         integer, intent(in) :: pattern(:)
         logical, intent(out) :: merges
-        real(dp) :: u(size(w)), start(size(w)), lam(order_probes), drift(order_probes)
-        real(dp) :: margin, slack, noise, r, bound
-        logical :: seen(size(w)), ok
-        integer :: k, i, c, ops
-        merges = .false.
-        seen = .false.
-        ops = 0
-        do i = 1, size(pattern)
-            c = pattern(i)
-            if (c > 0) then
-                seen(c) = .true.
-                ops = ops + 1
-            else
-                associate (jp => cs%jump(-c))
-                    seen(jp%contact(:jp%length)) = .true.
-                    ops = ops + 2*jump_levels*jp%length
-                end associate
-            end if
+        type(fine_t) :: fine
+        logical :: floor
+        integer :: j, st
+        call pattern_contracts(w, cs, pattern, merges, floor)
+        if (merges .or. .not. floor) return
+        call fine_start(fine, real(cs%kl, fine_kind), real(cs%kr, fine_kind), &
+            real(cs%e, fine_kind), cs%jumps, st)
+        if (st /= 0) return
+        fine%jumps = cs%jumps
+        do j = 1, cs%jumps
+            fine%jump(j)%length = cs%jump(j)%length
+            fine%jump(j)%times = cs%jump(j)%times
+            fine%jump(j)%contact = cs%jump(j)%contact
         end do
-        if (.not. all(seen)) return
-        u = w
-        margin = 1
-        do k = 1, order_probes
-            u = u/maxval(abs(u))
-            start = u
-            do i = 1, size(pattern)
-                if (pattern(i) > 0) then
-                    call rule_choice(u, c, slack)
-                    if (c /= pattern(i) .or. .not. slack > 0) return
-                    call cascade_collide(u, cs, c)
-                else
-                    call repeat_jump(cs, cs%jump(-pattern(i)), u, slack, ok)
-                    if (.not. ok) return
-                end if
-                margin = min(margin, slack)
-            end do
-            lam(k) = maxval(abs(u))
-            drift(k) = maxval(abs(u/lam(k) - start))
-        end do
-        noise = 16*ops*epsilon(1.0_dp)
-        if (.not. all(lam < 1 - noise)) return
-        ! the direction settles: its change does not grow from period to period
-        if (any(drift(2:) > drift(:order_probes - 1) + noise)) return
-        if (drift(order_probes) <= noise) then
-            bound = noise
-        else
-            r = drift(order_probes)/drift(order_probes - 1)
-            if (.not. r < 1) return
-            bound = drift(order_probes)*r/(1 - r)
-        end if
-        merges = bound < drift_safety*margin
-    end subroutine pattern_contracts
+        call fine_contracts(real(w, fine_kind), fine, pattern, merges, floor)
+    end subroutine pattern_merges
 
 end module sphere_row_cascade

@@ -128,7 +128,9 @@ contains
             "closed, those the engine's order at equal times can choose), or by its "// &
             "sequence in the engine's order at equal times settling into "// &
             "a contracting pattern of every contact (a shuttle of part of the block jumped "// &
-            "by powers of its period's map) or, in a block whose gaps are exactly "// &
+            "by powers of its period's map; the pattern checked again in real80 where "// &
+            "real64's rounding is too coarse for its margins) or, in a block whose gaps "// &
+            "are exactly "// &
             "closed, by its rates all falling below the insignificant rate within the "// &
             "try, every choice on the way clear (the fallback's own end, reached "// &
             "without stepping the engine through it), a "// &

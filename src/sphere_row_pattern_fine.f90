@@ -1,0 +1,15 @@
+#include "sphere_row_kinds.h"
+!> The cascade at one instant of sphere_row_pattern.inc in a kind finer than
+!> real64, for the certificates that real64 cannot resolve: the 80-bit
+!> extended kind where the compiler has it (about 5 times the cost of a
+!> real64 step), else real128 (about 50 times).
+module sphere_row_pattern_fine
+#ifdef SPHERE_ROW_XDP
+    use sphere_row_kinds, only: ck => xdp
+#else
+    use sphere_row_kinds, only: ck => qp
+#endif
+    implicit none
+    private
+    include "sphere_row_pattern.inc"
+end module sphere_row_pattern_fine
