@@ -39,6 +39,7 @@ contains
             new_unittest("block_struck_again_and_again", test_struck_again), &
             new_unittest("wait_of_one_block_holds_no_other", test_other_block), &
             new_unittest("pattern_certified_in_a_finer_kind", test_finer_kind), &
+            new_unittest("block_struck_at_rest_within_itself", test_struck_at_rest), &
             new_unittest("quiet_cascade_matches_fallback", test_quiet_cascade) &
             ]
     end function collect_collapse
@@ -590,6 +591,40 @@ contains
             0.7394772920734354_qp, 0.0_qp])
         call check_row_merges(scene, 200, .true., "pattern certified in a finer kind", error)
     end subroutine test_finer_kind
+
+    !> Survey row 370 (p = 15, e = 0.811, masses 0.0020 to 585): a block merged
+    !> by a limit is struck again and again at its right end (184 limits of
+    !> spheres 6..11, then 179 of 6..14). Each strike finds the block at rest
+    !> within itself, its rates all 0 but the struck contact's, so its
+    !> cascade is the one of the strike before up to its scale, and the first
+    !> try's proof of its merge stands for every later strike: the row ends
+    !> within 3000 collisions (1230, with 415 limits), every limit in closed
+    !> form, momentum kept and no pair closing, by the scan and by the
+    !> calendar. Stepping each strike's cascade until a try came due, and that
+    !> try waiting 1/64 of the last one's work, it was still going at 10^6.
+    subroutine test_struck_at_rest(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(scene_t) :: scene
+        integer :: stat
+        character(len=200) :: msg
+        call scene_init(scene, stat, msg, p=15, e=0.81104636169038712978363037109375_qp, &
+            masses=[2.981897446451268578437434889684477_qp, &
+            0.006417109208483864909276642094774339_qp, 0.024067622489022670178320856793732582_qp, &
+            0.0020011583739740145015132382368497846_qp, 163.04161417179457909400029199227823_qp, &
+            210.11158815829589477772296782360213_qp, 0.0028420989330048073808285782226200483_qp, &
+            0.8639172289110307004131200767941455_qp, 0.41958619952568144071096728026661023_qp, &
+            545.634310926784475501200194778833_qp, 0.006902180664373836458293852021486001_qp, &
+            5.512654616888185576193729352028292_qp, 584.9439177013239394971573263548163_qp, &
+            0.012198929705831733628203335181087598_qp, 170.94699773505405770422155684861786_qp], &
+            gaps=[0.0_qp, 0.0_qp, 0.280552188865840435028076171875_qp, 0.0_qp, &
+            0.330936086364090442657470703125_qp, 0.162342214025557041168212890625_qp, &
+            1.206049461849033832550048828125_qp, 1.2656581248156726360321044921875_qp, &
+            1.9136783699505031108856201171875_qp, 0.860124523751437664031982421875_qp, &
+            0.5570084783248603343963623046875_qp, 0.921351038850843906402587890625_qp, &
+            0.16385924816131591796875_qp, 0.605546773411333560943603515625_qp])
+        call check_row_merges(scene, 3000, .true., "block struck at rest within itself", error, &
+            one_block=.false.)
+    end subroutine test_struck_at_rest
 
     !> Run `scene` by the scan and by the calendar: it must end collapsed
     !> within `most` collisions (every limit in closed form if `closed_only`),
