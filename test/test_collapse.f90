@@ -598,7 +598,7 @@ contains
     !> within itself, its rates all 0 but the struck contact's, so its
     !> cascade is the one of the strike before up to its scale, and the first
     !> try's proof of its merge stands for every later strike: the row ends
-    !> within 3000 collisions (1230, with 415 limits), every limit in closed
+    !> within 3000 collisions (1237, with 415 limits), every limit in closed
     !> form, momentum kept and no pair closing, by the scan and by the
     !> calendar. Stepping each strike's cascade until a try came due, and that
     !> try waiting 1/64 of the last one's work, it was still going at 10^6.
