@@ -1,8 +1,8 @@
 #include "sphere_row_kinds.h"
 !> The cascade at one instant of sphere_row_pattern.inc in a kind finer than
 !> real64, for the certificates that real64 cannot resolve: the 80-bit
-!> extended kind where the compiler has it (about 5 times the cost of a
-!> real64 step), else real128 (about 50 times).
+!> extended kind where the compiler has it (a step costs about 4 times a
+!> real64 one), else real128 (about 22 times).
 module sphere_row_pattern_fine
 #ifdef SPHERE_ROW_XDP
     use sphere_row_kinds, only: ck => xdp
