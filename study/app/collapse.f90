@@ -3,12 +3,15 @@
 !> closed-form collapse limits, and the first of them once more with the
 !> fallback rule alone; how many end with an answer, how many collisions
 !> that takes, and whether every invariant holds; and each row left
-!> unanswered, with the command line that runs it again.
+!> unanswered, with the command line that runs it again and, where it was in
+!> a cascade at one instant, that cascade stepped further (step_further): how
+!> many more collisions it takes to end.
 program c12_collapse
     use, intrinsic :: iso_fortran_env, only: int64
     use sphere_row, only: qp, scene_t, run_t, simulate, str, itoa, status_max_collisions
     use sphere_row_survey, only: survey_t, survey_open, survey_close, survey_scene, &
-        check_invariants, scene_command
+        check_invariants, scene_command, further_t, step_further, further_word, &
+        further_none, further_going
     use sphere_row_tables, only: open_table, write_answer, answer_header, tab, row_t, &
         write_rows
     use sphere_row_study_cli, only: cli_t, start_program, read_keys, stop_unless_normal
@@ -23,11 +26,15 @@ program c12_collapse
     type(survey_t) :: survey
     character(len=:), allocatable :: out
     integer :: n, n_before, cap, seed, p_max
+    !> Collisions by which an unanswered row's cascade at one instant is
+    !> stepped further.
+    integer(int64) :: further_most
     !> What one run leaves for the tables.
     type :: outcome_t
         logical :: answered = .false., broken = .false.
         integer(int64) :: n = 0
         real :: seconds = 0
+        type(further_t) :: further
     end type outcome_t
     ! per rule: scenes, answered, invariant failures, collisions and seconds
     integer :: scenes(2), answered(2), broken(2)
@@ -42,17 +49,25 @@ program c12_collapse
     !> Of the unanswered rows (closed-form rule): those of equal masses, and
     !> those whose largest mass is 10^4 times the smallest or more.
     integer :: unanswered_equal = 0, unanswered_far = 0
+    !> Of the unanswered rows: those left in a cascade at one instant, and
+    !> those whose cascade, stepped further, is over within the collisions
+    !> allowed (no approach faster than tol v0 left).
+    integer :: unanswered_instant = 0, unanswered_over = 0
 
     call start_program(cli, "c12-collapse", &
         "Collapse in general rows: random rows run to their end with closed-form"//nl// &
         "collapse limits, and the first n_before of them with the fallback rule alone."//nl// &
         "Writes OUT/collapse_survey.tsv, OUT/collapse_by_p.tsv, OUT/collapse_answers.tsv"//nl// &
-        "and OUT/collapse_unanswered.tsv.")
+        "and OUT/collapse_unanswered.tsv. An unanswered row left in a cascade at one"//nl// &
+        "instant has that cascade stepped up to `further` more collisions by the"//nl// &
+        "engine's rule, in double precision, to tell how long that cascade runs.")
     call cli%add_int("n", "1000", "random rows run with closed-form limits", lo=1)
     call cli%add_int("n_before", "300", "of these, rows run with the fallback rule alone", lo=0)
     call cli%add_int("cap", "10000", "collisions after which a run counts as unanswered", lo=1)
     call cli%add_int("seed", "12", "seed of the MT19937 stream of the rows", lo=0)
     call cli%add_int("p_max", "20", "largest row length drawn (p from 2)", lo=2)
+    call cli%add_int("further", "1048576", "collisions an unanswered row's cascade at "// &
+        "one instant is stepped further (0: none)", lo=0)
     call read_keys(cli)
     out = cli%get_word("out")
     n = cli%get_int("n")
@@ -60,6 +75,7 @@ program c12_collapse
     cap = cli%get_int("cap")
     seed = cli%get_int("seed")
     p_max = cli%get_int("p_max")
+    further_most = cli%get_int("further")
 
     call run_survey()
     call write_tables()
@@ -117,7 +133,13 @@ contains
         outcome%seconds = real(c1 - c0)/real(rate)
         outcome%answered = run%status /= status_max_collisions
         outcome%n = run%n
-        if (.not. outcome%answered) return
+        if (.not. outcome%answered) then
+            ! (the table lists the unanswered rows of the closed-form rule only)
+            if (further_most > 0 .and. scene%closed_form_limits) then
+                call step_further(scene, run, further_most, outcome%further)
+            end if
+            return
+        end if
         call check_invariants(scene, run, slack, per_collision, why)
         outcome%broken = why /= ""
     end subroutine one_run
@@ -133,7 +155,12 @@ contains
         if (rule == closed) by_p(1, scene%p) = by_p(1, scene%p) + 1
         if (.not. outcome%answered) then
             if (rule /= closed) return
-            unanswered = [unanswered, unanswered_row(scene, index)]
+            unanswered = [unanswered, unanswered_row(scene, index, outcome%further)]
+            if (outcome%further%end /= further_none) unanswered_instant = unanswered_instant + 1
+            if (outcome%further%end /= further_none .and. &
+                outcome%further%end /= further_going) then
+                unanswered_over = unanswered_over + 1
+            end if
             if (all(scene%m == scene%m(1))) unanswered_equal = unanswered_equal + 1
             if (maxval(scene%m) >= 1.0e4_qp*minval(scene%m)) unanswered_far = unanswered_far + 1
             return
@@ -170,7 +197,8 @@ contains
         end do
         close (unit)
         call open_table(out, "collapse_unanswered.tsv", "row"//tab//"p"//tab//"e[1]"//tab// &
-            "mass_ratio[1]"//tab//"closed_gaps"//tab//"command", unit, stat, msg)
+            "mass_ratio[1]"//tab//"closed_gaps"//tab//"block"//tab//"further_collisions"// &
+            tab//"further_end"//tab//"further_decades[1]"//tab//"command", unit, stat, msg)
         call stop_unless_normal(stat, msg)
         call write_rows(unit, unanswered)
         close (unit)
@@ -189,6 +217,16 @@ contains
         call write_answer(unit, "collapse.unanswered_mass_ratio_1e4", itoa(unanswered_far), &
             "unanswered", itoa(size(unanswered)), itoa(unanswered_far - size(unanswered)), &
             "unanswered rows whose largest mass is 10^4 times the smallest or more")
+        call write_answer(unit, "collapse.unanswered_at_one_instant", &
+            itoa(unanswered_instant), "unanswered", itoa(size(unanswered)), &
+            itoa(unanswered_instant - size(unanswered)), "unanswered rows left in a "// &
+            "cascade at one instant through a touching block (further_end not -)")
+        call write_answer(unit, "collapse.unanswered_cascade_over_further", &
+            itoa(unanswered_over), "unanswered", itoa(size(unanswered)), &
+            itoa(unanswered_over - size(unanswered)), "unanswered rows whose cascade at "// &
+            "one instant, stepped up to "//itoa(int(further_most))//" more collisions by "// &
+            "the engine's rule alone in double precision, is over: no approach faster than "// &
+            "tol v0 left (further_end merges or ends); the row may go on after it")
         call write_answer(unit, "collapse.invariant_failures", itoa(broken(closed)), &
             "expected", "0", itoa(broken(closed)), "runs that ended with momentum, energy, "// &
             "a gap or a closing pair outside "//str(slack)//" + "//str(per_collision)// &
@@ -198,15 +236,30 @@ contains
 
     !> The row of collapse_unanswered.tsv of row `index` of the survey: its
     !> length, restitution, largest mass over smallest, gaps that start
-    !> closed, and the sphere-row command that runs it (scene_command).
-    type(row_t) function unanswered_row(scene, index) result(row)
+    !> closed, the touching block of the cascade at one instant it was left
+    !> in and that cascade stepped further (collisions, how it stood after
+    !> them, the decades its fastest approach fell; - if it was in none), and the
+    !> sphere-row command that runs it (scene_command).
+    type(row_t) function unanswered_row(scene, index, further) result(row)
         type(scene_t), intent(in) :: scene
         integer, intent(in) :: index
+        type(further_t), intent(in) :: further
         call row%add(index)
         call row%add(scene%p)
         call row%add(scene%e)
         call row%add(maxval(scene%m)/minval(scene%m))
         call row%add(count(scene%a == 0))
+        if (further%end == further_none) then
+            call row%add("-")
+            call row%add("-")
+            call row%add("-")
+            call row%add("-")
+        else
+            call row%add(itoa(further%first)//"-"//itoa(further%last))
+            call row%add(further%n)
+            call row%add(further_word(further%end))
+            call row%add(further%decades)
+        end if
         call row%add(scene_command(scene))
     end function unanswered_row
 

@@ -147,7 +147,13 @@ contains
             "(collapse_unanswered.tsv, each with the command that runs it again), "// &
             field("collapse", "collapse.unanswered_mass_ratio_1e4")//" have a largest mass "// &
             "10^4 times the smallest or more and "// &
-            field("collapse", "collapse.unanswered_equal_masses")//" equal masses.")
+            field("collapse", "collapse.unanswered_equal_masses")//" equal masses; "// &
+            field("collapse", "collapse.unanswered_at_one_instant")//" are left in a "// &
+            "cascade at one instant through a touching block, which, stepped further by "// &
+            "the engine's rule alone (in double precision, no limit taken on the way), is "// &
+            "over within the collisions allowed in "// &
+            field("collapse", "collapse.unanswered_cascade_over_further")//" of them "// &
+            "(collapse_unanswered.tsv, columns further_*; the row may go on after it).")
         call section("ecrit", "e_crit(p): critical restitution of the struck row of p spheres", &
             [character(len=60) :: "ecrit"], &
             "For every p equal spheres (a = d = v0 = 1) a scan of e decides each run by the "// &

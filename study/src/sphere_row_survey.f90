@@ -7,16 +7,51 @@
 !> uniform in (0, 2]; d = 1, v0 = 1. The numbers come from GSL's MT19937,
 !> seeded once per survey, drawn in a fixed order, so a survey is the same on
 !> every machine.
+!>
+!> A row left at its collision cap inside a cascade at one instant (a touching
+!> block, its gaps exactly 0) can be followed further by step_further: the
+!> block's cascade stepped by the engine's rule alone, in double precision,
+!> which tells how long that cascade still runs.
 module sphere_row_survey
     use, intrinsic :: iso_c_binding, only: c_ptr, c_double, c_long
-    use sphere_row, only: qp, scene_t, run_t, scene_init, simulate, momentum, &
+    use, intrinsic :: iso_fortran_env, only: int64
+    use sphere_row, only: dp, qp, scene_t, run_t, scene_init, simulate, momentum, &
         kinetic_energy, status_normal, status_collapsed, short_text, itoa
     use sphere_row_gsl, only: gsl_rng_mt19937, gsl_rng_alloc, gsl_rng_set, &
         gsl_rng_uniform_pos, gsl_rng_free
+    ! the rule and collision of the cascade at one instant in double
+    ! precision, as the engine's tries of a touching block step it
+    use sphere_row_pattern_dp, only: cascade_t, cascade_start, rule_choice, cascade_collide
     implicit none
     private
     public :: survey_t, survey_open, survey_close, survey_scene, check_invariants, &
         scene_command
+    public :: further_t, step_further, further_word
+    public :: further_none, further_merges, further_ends, further_going
+
+    !> How a cascade at one instant stepped further stands: no such cascade
+    !> (the run was not in one); every rate of the block within the
+    !> insignificant tol v0 (the whole block at one velocity, which the
+    !> engine's fallback merges); no approach faster than tol v0 left but
+    !> some rate beyond it (the cascade at that instant is over and the block
+    !> comes apart, perhaps in parts at one velocity each); or still closing
+    !> after the collisions allowed.
+    integer, parameter :: further_none = 0, further_merges = 1, further_ends = 2, &
+        further_going = 3
+
+    !> A run left at its cap, followed further (step_further).
+    type :: further_t
+        !> First and last sphere of the touching block whose cascade the run
+        !> was in (0, 0 if none).
+        integer :: first = 0, last = 0
+        !> Collisions stepped further, and how the cascade stood after them
+        !> (further_none, further_merges, further_ends or further_going).
+        integer(int64) :: n = 0
+        integer :: end = further_none
+        !> Decades by which the block's fastest approach fell over those
+        !> collisions (to the insignificant rate at most).
+        real(qp) :: decades = 0
+    end type further_t
 
     !> A stream of random scenes.
     type :: survey_t
@@ -131,5 +166,116 @@ contains
         end do
         command = command//" max_collisions="//itoa(scene%max_collisions)
     end function scene_command
+
+    !> Follow a run that stopped at its cap inside a cascade at one instant:
+    !> the touching block around the fastest approach among the gaps that
+    !> are exactly 0 (its collisions all come before any other, at the same
+    !> time; another such block elsewhere in the row is not followed), its
+    !> cascade stepped by the engine's rule (the fastest approach first, then
+    !> the leftmost; the collision (6) with the run's kicks) for at most
+    !> `most` more collisions, until no approach is faster than the
+    !> insignificant tol*v0. In double precision, so that 10^8 collisions
+    !> take seconds: the engine's own sequence is in real(16), and the two
+    !> sequences differ only at a near tie (the test
+    !> further_steps_are_the_engines compares them). None of the engine's
+    !> limits is taken on the way (the fallback's of a quiet part of the
+    !> block, a proof of the merge), and the row itself goes on after the
+    !> cascade: this measures how long the cascade at that instant runs, not
+    !> how far the row is from its answer, and the engine does not use it.
+    !> Where tol*v0 is below double's range relative to the block's rates
+    !> (tol near 0), the cascade is stepped `most` collisions. `rates`, if
+    !> present, receives the block's rates after the collisions stepped
+    !> (contacts further%first..further%last - 1; size 0 if there is no block).
+    pure subroutine step_further(scene, run, most, further, rates)
+        type(scene_t), intent(in) :: scene
+        type(run_t), intent(in) :: run
+        integer(int64), intent(in) :: most
+        type(further_t), intent(out) :: further
+        real(qp), allocatable, intent(out), optional :: rates(:)
+        type(cascade_t) :: cs
+        real(dp), allocatable :: w(:)
+        real(dp) :: quiet, start, slack
+        integer :: i1, i2, c, shift, st
+        if (present(rates)) allocate (rates(0))
+        call touching_block(scene, run, i1, i2)
+        if (i1 == 0) return
+        call cascade_start(cs, real(run%kick_left(i1:i2), dp), real(run%kick_right(i1:i2), dp), &
+            real(scene%e, dp), 0, st)
+        if (st /= 0) return
+        further%first = i1
+        further%last = i2 + 1
+        ! the approach rates (-dy), scaled by a power of 2 to below 1, which
+        ! rounds as the unscaled ones do, so that double's range holds their
+        ! fall to tol v0 from any scale
+        shift = -exponent(maxval(abs(run%dy(i1:i2))))
+        w = real(scale(-run%dy(i1:i2), shift), dp)
+        quiet = real(min(scale(scene%tol*scene%v0, shift), 1.0_qp), dp)
+        start = maxval(w)
+        further%end = further_going
+        do
+            call rule_choice(w, c, slack)
+            if (c == 0) then
+                further%end = further_ends
+            else if (w(c) <= quiet) then
+                further%end = further_ends
+            end if
+            if (further%end == further_ends) then
+                if (all(abs(w) <= quiet)) further%end = further_merges
+                exit
+            end if
+            if (further%n >= most) exit
+            call cascade_collide(w, cs, c)
+            further%n = further%n + 1
+        end do
+        further%decades = log10(real(start, qp)/real(max(maxval(w), quiet, tiny(w)), qp))
+        if (present(rates)) rates = -scale(real(w, qp), -shift)
+    end subroutine step_further
+
+    !> The contacts i1..i2 of the run of gaps exactly 0 around the fastest
+    !> approach among them that is faster than tol v0 (i1 = i2 = 0 if none).
+    pure subroutine touching_block(scene, run, i1, i2)
+        type(scene_t), intent(in) :: scene
+        type(run_t), intent(in) :: run
+        integer, intent(out) :: i1, i2
+        integer :: j, c
+        i1 = 0
+        i2 = 0
+        c = 0
+        do j = 1, scene%p - 1
+            if (run%y(j) /= 0 .or. run%dy(j) >= -scene%tol*scene%v0) cycle
+            if (c == 0) then
+                c = j
+            else if (run%dy(j) < run%dy(c)) then
+                c = j
+            end if
+        end do
+        if (c == 0) return
+        i1 = c
+        do while (i1 > 1)
+            if (run%y(i1 - 1) /= 0) exit
+            i1 = i1 - 1
+        end do
+        i2 = c
+        do while (i2 < scene%p - 1)
+            if (run%y(i2 + 1) /= 0) exit
+            i2 = i2 + 1
+        end do
+    end subroutine touching_block
+
+    !> The word of a further_t's end in the tables.
+    pure function further_word(end) result(word)
+        integer, intent(in) :: end
+        character(len=:), allocatable :: word
+        select case (end)
+        case (further_merges)
+            word = "merges"
+        case (further_ends)
+            word = "ends"
+        case (further_going)
+            word = "going"
+        case default
+            word = "-"
+        end select
+    end function further_word
 
 end module sphere_row_survey

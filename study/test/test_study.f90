@@ -1,7 +1,8 @@
 !> Tests of the study's core computations on small cases: the secant solver,
 !> the bisection of changes, the collapse-cycle analysis, the closed forms.
 module test_study
-    use sphere_row, only: qp, scene_t, run_t, event_log_t, scene_init, simulate, str, &
+    use, intrinsic :: iso_fortran_env, only: int64
+    use sphere_row, only: dp, qp, scene_t, run_t, event_log_t, scene_init, simulate, str, &
         status_normal
     use sphere_row_analysis, only: sequence_of, sequence_hash, sequence_text, tail_period, &
         rate_map, cubic_discriminant, critical_restitution, sequence_polynomials, poly_eval
@@ -12,7 +13,7 @@ module test_study
     use sphere_row, only: itoa, status_word, status_collapsed, real_str
     use sphere_row_tables, only: row_t, tab, write_rows
     use sphere_row_survey, only: survey_t, survey_open, survey_close, survey_scene, &
-        scene_command
+        scene_command, further_t, step_further, further_merges, further_ends, further_going
     use sphere_row_cli, only: cli_t, string_t
     use sphere_row_scene_keys, only: add_scene_keys, scene_from_cli
     use sphere_row_error, only: input_error_t => error_t
@@ -42,6 +43,9 @@ contains
             new_unittest("bisect_ahead_takes_bisects_steps", test_bisect_ahead), &
             new_unittest("write_rows_same_bytes", test_write_rows), &
             new_unittest("survey_command_reads_back", test_survey_command), &
+            new_unittest("further_steps_are_the_engines", test_further_steps), &
+            new_unittest("further_ends_as_the_engine", test_further_ends), &
+            new_unittest("further_tie_leftmost", test_further_tie), &
             new_unittest("critical_restitution_4", test_critical), &
             new_unittest("tail_period", test_tail_period), &
             new_unittest("sequence_polynomials", test_polynomials), &
@@ -306,6 +310,122 @@ contains
         end do
         call survey_close(survey)
     end subroutine test_survey_command
+
+    !> step_further steps the engine's own cascade: sphere 1 strikes a touching
+    !> block of two heavy spheres with a light one between them (masses 1;
+    !> 100, 0.001, 100; e = 0.5; fallback rule only, so that the engine steps
+    !> the cascade itself). Stopped at its 50th collision (sphere 1, bounced
+    !> back, still touches: the block is all four) and stepped 3000 more in
+    !> double precision, the block's rates are those of the engine stopped at
+    !> its 3050th, at the same time, within 10 roundings of double per
+    !> collision stepped, relative to the closing rates (an e off by 1e-12
+    !> is 5e-9 off).
+    subroutine test_further_steps(error)
+        type(error_t), allocatable, intent(out) :: error
+        integer, parameter :: steps = 3000
+        type(scene_t) :: row
+        type(run_t) :: early, late
+        type(further_t) :: further
+        integer :: stat
+        character(len=200) :: msg
+        real(qp), allocatable :: rates(:)
+        real(qp) :: drift, allowed
+        call scene_init(row, stat, msg, p=4, e=0.5_qp, masses=[1.0_qp, 100.0_qp, &
+            0.001_qp, 100.0_qp], gaps=[1.0_qp, 0.0_qp, 0.0_qp])
+        row%closed_form_limits = .false.
+        row%max_collisions = 50
+        call simulate(row, early)
+        row%max_collisions = 50 + steps
+        call simulate(row, late)
+        call step_further(row, early, int(steps, int64), further, rates)
+        call check(error, further%first == 1 .and. further%last == 4 .and. &
+            further%n == steps .and. further%end == further_going, "block "// &
+            itoa(further%first)//"-"//itoa(further%last)//", "//itoa(further%n)//" collisions")
+        if (allocated(error)) return
+        call check(error, late%t == early%t .and. late%n == 50 + steps, "the cascade is not "// &
+            "at one instant: t "//str(early%t)//" and "//str(late%t))
+        if (allocated(error)) return
+        drift = maxval(abs(rates - late%dy))/maxval(abs(late%dy(2:3)))
+        allowed = 10*steps*real(epsilon(1.0_dp), qp)
+        call check(error, drift < allowed, "rates "//str(drift)//" apart, allowed "//str(allowed))
+    end subroutine test_further_steps
+
+    !> step_further ends where the engine's own cascade ends: each row below
+    !> is run one collision by the engine (fallback rule only), stepped
+    !> further to the end of its cascade, and run to its end by the engine,
+    !> which takes exactly one collision more than step_further (nothing
+    !> collides after these cascades); allowed exactly its collisions it ends,
+    !> one fewer and it is going. Heavy, light, heavy spheres touching,
+    !> struck at one end: merges, every rate quiet. The same struck by a
+    !> light sphere from a gap, which bounces back: the cascade ends with
+    !> the heavy spheres and the light one between them at one velocity, the
+    !> striker moving away (ends). Three equal spheres touching, struck at
+    !> e = 0.5 (above the threshold 7 - 4 sqrt 3 of three): they come apart
+    !> (ends).
+    subroutine test_further_ends(error)
+        type(error_t), allocatable, intent(out) :: error
+        call one_row([100.0_qp, 1.0_qp, 100.0_qp], [0.0_qp, 0.0_qp], further_merges)
+        if (allocated(error)) return
+        call one_row([1.0_qp, 100.0_qp, 1.0_qp, 100.0_qp], [1.0_qp, 0.0_qp, 0.0_qp], &
+            further_ends)
+        if (allocated(error)) return
+        call one_row([1.0_qp, 1.0_qp, 1.0_qp], [0.0_qp, 0.0_qp], further_ends)
+    contains
+        subroutine one_row(masses, gaps, end)
+            real(qp), intent(in) :: masses(:), gaps(:)
+            integer, intent(in) :: end
+            type(scene_t) :: row
+            type(run_t) :: run, whole
+            type(further_t) :: further
+            integer(int64) :: n
+            integer :: stat
+            character(len=200) :: msg
+            call scene_init(row, stat, msg, p=size(masses), e=0.5_qp, masses=masses, gaps=gaps)
+            row%closed_form_limits = .false.
+            call simulate(row, whole)
+            row%max_collisions = 1
+            call simulate(row, run)
+            call step_further(row, run, 10000000_int64, further)
+            call check(error, further%end == end .and. whole%n == 1 + further%n, &
+                itoa(size(masses))//" spheres: end "//itoa(further%end)//" after "// &
+                itoa(further%n)//" more; the engine ends after "//itoa(whole%n))
+            if (allocated(error)) return
+            ! allowed exactly the collisions it takes, it ends; one fewer, it goes on
+            n = further%n
+            call step_further(row, run, n, further)
+            call check(error, further%end == end .and. further%n == n, &
+                itoa(size(masses))//" spheres, "//itoa(n)//" allowed: end "//itoa(further%end))
+            if (allocated(error)) return
+            call step_further(row, run, n - 1, further)
+            call check(error, further%end == further_going .and. further%n == n - 1, &
+                itoa(size(masses))//" spheres, "//itoa(n - 1)//" allowed: end "// &
+                itoa(further%end))
+        end subroutine one_row
+    end subroutine test_further_ends
+
+    !> Of two contacts closing equally fast the leftmost collides first, as
+    !> in the engine: three equal spheres touching, rates -1 and -1, e = 0.5;
+    !> after one collision the left contact opens at 0.5 and the right one
+    !> closes at 1 + 0.75 (the other order would open the right one).
+    subroutine test_further_tie(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(scene_t) :: row
+        type(run_t) :: run
+        type(further_t) :: further
+        real(qp), allocatable :: rates(:)
+        integer :: stat
+        character(len=200) :: msg
+        call scene_init(row, stat, msg, p=3, e=0.5_qp, gaps=[0.0_qp, 0.0_qp])
+        run%y = [0.0_qp, 0.0_qp]
+        run%dy = [-1.0_qp, -1.0_qp]
+        run%kick_left = [0.75_qp, 0.75_qp]
+        run%kick_right = [0.75_qp, 0.75_qp]
+        call step_further(row, run, 1_int64, further, rates)
+        call check(error, further%n == 1 .and. size(rates) == 2, "no collision stepped")
+        if (allocated(error)) return
+        call check(error, rates(1) == 0.5_qp .and. rates(2) == -1.75_qp, "rates after the "// &
+            "tie: "//str(rates(1))//", "//str(rates(2)))
+    end subroutine test_further_tie
 
     function n_class(e) result(class)
         real(qp), intent(in) :: e
