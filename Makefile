@@ -1,8 +1,11 @@
 # ARGESIM Comparison 12 — build, test and the reproducible study.
 #
 #   make test            fpm test of the engine and of the study (installs missing
-#                        prerequisites first)
+#                        prerequisites first): the quick suite, each test a few seconds
+#   make test-long       the same tests in their deep versions (more cases, longer runs)
+#   make test-times      make test, then build/test-times.tsv: every test's wall time
 #   make study           every task's tables, figures and results/summary.md
+#   make bench           speed: the cost study (cost.tsv, its figure) and bench.tsv
 #   make check-results   regenerate the study elsewhere and compare with results/
 #   make docs            API documentation (FORD) in build/docs/index.html
 #   make lint            the Fortran linter fortitude, rules in fortitude.toml
@@ -79,20 +82,21 @@ METHODS := $(RESULTS)/methods_work_precision.tsv $(RESULTS)/methods_stability.ts
 COLLAPSE := $(RESULTS)/collapse_survey.tsv $(RESULTS)/collapse_by_p.tsv \
       $(RESULTS)/collapse_answers.tsv $(RESULTS)/collapse_unanswered.tsv
 ECRIT := $(RESULTS)/ecrit.tsv $(RESULTS)/ecrit_answers.tsv
-# machine-dependent timings (like bench.tsv): not compared by check-results
+# machine-dependent timings (like bench.tsv): made by `make bench`, not by
+# `make study`, and not compared by check-results
 COST := $(RESULTS)/cost.tsv $(RESULTS)/cost_summary.tsv
-TABLES := $(A1) $(A2) $(B1) $(B2) $(C1) $(C2) $(METHODS) $(COLLAPSE) $(ECRIT) $(COST)
+TABLES := $(A1) $(A2) $(B1) $(B2) $(C1) $(C2) $(METHODS) $(COLLAPSE) $(ECRIT)
 ANSWERS := $(filter %_answers.tsv,$(TABLES))
 
 FIGURES := a1_paths b1_n b1_critical b2_velocities c1_secant c2_ecdf c2_histogram collapse_by_p \
-           c2_convergence ecrit cost
+           c2_convergence ecrit
 PNG := $(FIGURES:%=$(RESULTS)/%.png) $(RESULTS)/methods_work_precision.png \
        $(RESULTS)/methods_stability.png
 SVG := $(FIGURES:%=$(RESULTS)/%.svg) $(RESULTS)/methods_work_precision.svg \
        $(RESULTS)/methods_stability.svg
 
-.PHONY: all help prereqs test test-mpi check-layers study tables figures bench callgrind \
-        check-results docs lint clean
+.PHONY: all help prereqs test test-long test-times test-mpi check-layers study tables \
+        figures bench callgrind check-results docs lint clean
 
 all: study
 
@@ -105,23 +109,39 @@ prereqs: ## install missing gfortran, GSL, gnuplot, fpm (Debian, root) or say ho
 # the engine's and the CLI's tests (root package), then the study's (study/);
 # the last line adds up both runs' `N passed, N failed` (a run that reports
 # no such line, e.g. because it did not build, counts as one failure)
+# (TEST_ARGS=long gives the deep versions: test-long)
 test: prereqs check-layers $(INC_STAMP) ## run both packages' tests; last line: N passed, N failed
 	@mkdir -p build
 	@set -o pipefail; status=0; \
-	$(FPM) test $(TEST_FLAGS) 2>&1 | tee build/test-engine.log || status=1; \
-	(cd study && $(FPM) test $(TEST_FLAGS)) 2>&1 | tee build/test-study.log || status=1; \
+	$(FPM) test $(TEST_FLAGS) $(if $(TEST_ARGS),-- $(TEST_ARGS)) 2>&1 \
+		| tee build/test-engine.log || status=1; \
+	(cd study && $(FPM) test $(TEST_FLAGS) $(if $(TEST_ARGS),-- $(TEST_ARGS))) 2>&1 \
+		| tee build/test-study.log || status=1; \
 	awk '/^[0-9]+ passed, [0-9]+ failed$$/ { p += $$1; f += $$3; n++ } \
 		END { f += 2 - n; printf "%d passed, %d failed\n", p, f; exit f > 0 }' \
 		build/test-engine.log build/test-study.log && exit $$status
 
-study: prereqs ## tables, figures, answers.tsv, bench.tsv and summary.md in results/
-	@$(MAKE) --no-print-directory $(RESULTS)/summary.md $(PNG) $(SVG) $(RESULTS)/bench.tsv
+test-long: ## the tests in their deep versions (more random cases, longer runs; CI runs it)
+	@$(MAKE) --no-print-directory test TEST_ARGS=long
+
+# every test's line ends in its wall time: `ok   suite/name (1.23 s)`
+test-times: test ## make test, then build/test-times.tsv: each test's seconds, slowest first
+	@grep -h '^\(ok  \|FAIL\) ' build/test-engine.log build/test-study.log \
+		| sed -E 's/^(ok  |FAIL) +([^ ]+) \(([0-9.]+) s\).*/\3\t\2/' | sort -rn \
+		| { printf 'seconds\ttest\n'; cat; } > build/test-times.tsv
+	@head -n 6 build/test-times.tsv
+	@awk -F '\t' 'NR > 1 { s += $$1 } END { printf "%d tests, %.1f s in all\n", NR - 1, s }' \
+		build/test-times.tsv
+
+study: prereqs ## every task's tables and figures, answers.tsv and summary.md in results/
+	@$(MAKE) --no-print-directory $(RESULTS)/summary.md $(PNG) $(SVG)
 
 tables: $(TABLES) ## the study's tables only
 
 figures: $(PNG) $(SVG) ## the study's figures only
 
-bench: $(RESULTS)/bench.tsv ## speed of the engine per precision and of the study
+bench: prereqs ## speed: cost per collision against p (cost.tsv, cost.png) and bench.tsv
+	@$(MAKE) --no-print-directory $(RESULTS)/bench.tsv $(RESULTS)/cost.png $(RESULTS)/cost.svg
 
 # exact counts, not times: valgrind is installed on demand, so `make test` and
 # `make study` never need it; bench.tsv copies the last measured counts
@@ -203,7 +223,7 @@ $(COST) &: $(BUILD_STAMP)
 $(RESULTS)/answers.tsv $(RESULTS)/summary.md &: $(ANSWERS) $(BUILD_STAMP)
 	$(BIN)/c12-summary out=$(RESULTS)
 
-$(RESULTS)/bench.tsv: $(BUILD_STAMP) $(TABLES)
+$(RESULTS)/bench.tsv: $(BUILD_STAMP) $(TABLES) $(COST)
 	$(BIN)/c12-bench out=$(RESULTS)
 
 # figures: the script is a prerequisite of its figure

@@ -1,7 +1,7 @@
 !> Test driver of the engine and the CLI: runs every suite and ends with
 !> `N passed, N failed`.
 program check
-    use testsuite, only: run_tests
+    use testsuite, only: run_tests, read_test_options
     use test_engine, only: collect_engine
     use test_collapse, only: collect_collapse
     use test_calendar, only: collect_calendar
@@ -12,6 +12,7 @@ program check
     integer :: passed, failed
     passed = 0
     failed = 0
+    call read_test_options(failed)
     call run_tests("engine", collect_engine(), passed, failed)
     call run_tests("collapse", collect_collapse(), passed, failed)
     call run_tests("calendar", collect_calendar(), passed, failed)

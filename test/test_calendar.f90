@@ -5,7 +5,7 @@
 module test_calendar
     use sphere_row, only: qp, scene_t, run_t, event_log_t, scene_init, simulate, &
         status_normal, status_collapsed, itoa
-    use testsuite, only: error_t, unittest_t, new_unittest, check, seed_random
+    use testsuite, only: error_t, unittest_t, new_unittest, check, seed_random, cases
     implicit none
     private
     public :: collect_calendar
@@ -101,7 +101,9 @@ contains
         real(qp) :: u(42), spread
         integer :: stat, i, p, bits, compared, collapsed, apart
         character(len=200) :: msg
-        integer, parameter :: scenes = 3000, cap = 3000
+        integer, parameter :: cap = 3000
+        integer :: scenes
+        scenes = cases(100, 3000)
         call seed_random(2468, 13)
         bits = 0
         compared = 0

@@ -5,7 +5,7 @@ module test_collapse
     use sphere_row, only: qp, dp, scene_t, run_t, event_log_t, scene_init, simulate, &
         kinetic_energy, momentum, status_normal, status_collapsed, status_max_collisions
     use sphere_row_cascade, only: cascade_jump
-    use testsuite, only: error_t, unittest_t, new_unittest, check, seed_random
+    use testsuite, only: error_t, unittest_t, new_unittest, check, seed_random, cases
     implicit none
     private
     public :: collect_collapse
@@ -206,7 +206,9 @@ contains
         real(qp) :: u(42), v0(20), scale
         integer :: stat, i, p, finite, limited
         character(len=200) :: msg
-        integer, parameter :: scenes = 1000, cap = 5000
+        integer, parameter :: cap = 5000
+        integer :: scenes
+        scenes = cases(150, 1000)
         call seed_random(4321, 11)
         finite = 0
         limited = 0

@@ -1,6 +1,6 @@
 !> Test driver of the study: runs every suite and ends with `N passed, N failed`.
 program check
-    use testsuite, only: run_tests
+    use testsuite, only: run_tests, read_test_options
     use test_study, only: collect_study
     use test_monte_carlo, only: collect_monte_carlo
     use test_methods, only: collect_methods
@@ -12,6 +12,7 @@ program check
     integer :: passed, failed
     passed = 0
     failed = 0
+    call read_test_options(failed)
     call run_tests("study", collect_study(), passed, failed)
     call run_tests("monte_carlo", collect_monte_carlo(), passed, failed)
     call run_tests("methods", collect_methods(), passed, failed)

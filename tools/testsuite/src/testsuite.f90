@@ -1,11 +1,18 @@
 !> A small test harness: tests are `subroutine test_x(error)`, collected into
 !> suites; the driver runs them all and ends with `N passed, N failed`.
+!>
+!> Each test's line gives its wall time (`make test-times` tabulates them). The
+!> driver's command line may hold `long`: the deep versions of the property
+!> tests, more cases and longer runs (`make test-long`).
 module testsuite
-    use, intrinsic :: iso_fortran_env, only: output_unit
+    use, intrinsic :: iso_fortran_env, only: output_unit, int64
     implicit none
     private
     public :: error_t, unittest_t, test_proc, new_unittest, check, run_tests
-    public :: read_text, count_lines, seed_random
+    public :: read_text, count_lines, seed_random, read_test_options, long_tests, cases
+
+    !> True when the driver was asked for the deep versions of the tests.
+    logical, protected :: long_tests = .false.
 
     !> A failed check: its message.
     type :: error_t
@@ -49,22 +56,58 @@ contains
         end if
     end subroutine check
 
-    !> Run every test of a suite, print one line per test, add up the counts.
+    !> Read the driver's command line: `long` asks for the deep tests; any
+    !> other argument fails the run (reported as one failed test).
+    subroutine read_test_options(failed)
+        integer, intent(inout) :: failed
+        integer :: i, n
+        character(len=4096) :: arg
+        do i = 1, command_argument_count()
+            call get_command_argument(i, arg, length=n)
+            if (arg(:n) == "long") then
+                long_tests = .true.
+            else
+                failed = failed + 1
+                write (output_unit, "(a)") "FAIL testsuite: argument "//arg(:n)// &
+                    ": allowed only long"
+            end if
+        end do
+    end subroutine read_test_options
+
+    !> The number of random cases of a property test: `quick` in the default
+    !> run, `deep` when the driver was asked for the long tests.
+    pure integer function cases(quick, deep)
+        integer, intent(in) :: quick, deep
+        cases = merge(deep, quick, long_tests)
+    end function cases
+
+    !> Run every test of a suite, print one line per test with its wall time,
+    !> add up the counts.
     subroutine run_tests(suite, tests, passed, failed)
         character(len=*), intent(in) :: suite
         type(unittest_t), intent(in) :: tests(:)
         integer, intent(inout) :: passed, failed
         type(error_t), allocatable :: error
         integer :: i
+        integer(int64) :: t0, t1, rate
+        real :: seconds
+        character(len=16) :: time_text
         do i = 1, size(tests)
+            call system_clock(t0, rate)
             call tests(i)%test(error)
+            call system_clock(t1)
+            seconds = real(t1 - t0)/real(rate)
+            write (time_text, "(f8.2)") seconds
+            time_text = adjustl(time_text)
             if (allocated(error)) then
                 failed = failed + 1
-                write (output_unit, "(a)") "FAIL "//suite//"/"//tests(i)%name//": "//error%message
+                write (output_unit, "(a)") "FAIL "//suite//"/"//tests(i)%name//" ("// &
+                    trim(time_text)//" s): "//error%message
                 deallocate (error)
             else
                 passed = passed + 1
-                write (output_unit, "(a)") "ok   "//suite//"/"//tests(i)%name
+                write (output_unit, "(a)") "ok   "//suite//"/"//tests(i)%name//" ("// &
+                    trim(time_text)//" s)"
             end if
         end do
     end subroutine run_tests
