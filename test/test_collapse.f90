@@ -3,7 +3,7 @@
 !> form, with the fallback rule alone, or with the same run without limits.
 module test_collapse
     use sphere_row, only: qp, dp, scene_t, run_t, event_log_t, scene_init, simulate, &
-        kinetic_energy, momentum, status_normal, status_collapsed, status_max_collisions
+        kinetic_energy, momentum, status_normal, status_collapsed, status_max_collisions, str, itoa
     use sphere_row_cascade, only: cascade_jump
     use testsuite, only: error_t, unittest_t, new_unittest, check, seed_random, cases
     implicit none
@@ -18,11 +18,49 @@ module test_collapse
 
 contains
 
+    !> A certified cycle's limit is taken at the accumulation time of its
+    !> collisions: the same scene stepped by the fallback alone at a tolerance
+    !> of 1e-60, which runs the geometric series of the collisions down to
+    !> rates of 1e-60, ends within 1e-12 of that time (p = 3 at e = 0.05,
+    !> the definition's row at e = 0.1 and a row of unequal masses). A limit
+    !> taken one period early or late is off by a whole period's duration
+    !> (4e-8 at p = 3). (The cycle's tail is summed from the last ratio of
+    !> its period times, which after three periods is good to about 1e-16.)
+    subroutine test_cycle_time(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(scene_t) :: scene
+        type(run_t) :: cycle, stepped
+        integer :: stat, i
+        character(len=200) :: msg
+        real(qp), parameter :: es(3) = [0.05_qp, 0.1_qp, 0.1_qp]
+        integer, parameter :: ps(3) = [3, 4, 4]
+        do i = 1, size(es)
+            if (i < 3) then
+                call scene_init(scene, stat, msg, p=ps(i), e=es(i))
+            else
+                call scene_init(scene, stat, msg, p=ps(i), e=es(i), &
+                    masses=[1.0_qp, 2.0_qp, 1.5_qp, 1.0_qp])
+            end if
+            call simulate(scene, cycle)
+            scene%closed_form_limits = .false.
+            scene%tol = 1.0e-60_qp
+            call simulate(scene, stepped)
+            call check(error, cycle%status == status_collapsed .and. cycle%closed_limits >= 1 &
+                .and. stepped%status == status_collapsed, "cycle time, scene "//itoa(i) &
+                //": not a closed-form limit and a stepped collapse")
+            call check(error, abs(cycle%t_end - stepped%t_end) <= 1.0e-12_qp, &
+                "cycle time, scene "//itoa(i)//": limit at "//str(cycle%t_end) &
+                //", stepped to "//str(stepped%t_end))
+            if (allocated(error)) return
+        end do
+    end subroutine test_cycle_time
+
     !> The collapse tests.
     function collect_collapse() result(tests)
         type(unittest_t), allocatable :: tests(:)
         tests = [ &
             new_unittest("light_middle_sphere", test_light_middle), &
+            new_unittest("cycle_limit_at_its_accumulation_time", test_cycle_time), &
             new_unittest("plastic_cascade_matches_fallback", test_plastic_cascade), &
             new_unittest("plastic_unequal_masses", test_plastic_unequal), &
             new_unittest("finite_counts_near_e_crit", test_near_critical), &

@@ -11,6 +11,9 @@ module test_monte_carlo
         cubic_law_applies, cubic_law_mean, cubic_law_sd, cubic_law_quantile, cubic_law_cdf, &
         cubic_law_density, cubic_law_v4, single_impact_bound, cubic_law_ks_distance
     use sphere_row_sorting, only: radix_sort, sort
+    use sphere_row_gsl, only: gsl_rng_mt19937, gsl_rng_alloc, gsl_rng_set, &
+        gsl_rng_uniform_pos, gsl_rng_free
+    use, intrinsic :: iso_c_binding, only: c_ptr, c_long
     use testsuite, only: error_t, unittest_t, new_unittest, check
     !$ use omp_lib, only: omp_set_num_threads, omp_get_max_threads
     implicit none
@@ -35,6 +38,7 @@ contains
         tests = [ &
             new_unittest("box_muller_moments", test_box_muller_moments), &
             new_unittest("box_muller_reproducible", test_reproducible), &
+            new_unittest("box_muller_first_pair_by_hand", test_first_pair), &
             new_unittest("box_muller_unseeded_nan", test_unseeded), &
             new_unittest("moments_quantiles_known_sample", test_known_sample), &
             new_unittest("ks_distance_known", test_ks_known), &
@@ -88,6 +92,34 @@ contains
 
     !> The same seed gives the same draws, bit for bit, after a reseed (which
     !> also drops the stored second normal); another seed gives others.
+    !> The sampler's first two draws are the Box–Muller pair of the first two
+    !> uniforms of its MT19937 stream, r cos(2 pi u2) and r sin(2 pi u2) with
+    !> r = sqrt(-2 ln u1): computed here from GSL's uniforms with 2 pi taken
+    !> as 8 atan(1), they agree to a few roundings (a 2 pi wrong in its third
+    !> digit moves them by some 1e-3).
+    subroutine test_first_pair(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(normal_sampler_t) :: sampler
+        type(c_ptr) :: rng
+        real(dp) :: z1, z2, u1, u2, r, angle
+        integer :: stat
+        character(len=200) :: msg
+        call sampler%seed(12, stat, msg)
+        call sampler%draw(z1)
+        call sampler%draw(z2)
+        call sampler%release()
+        rng = gsl_rng_alloc(gsl_rng_mt19937)
+        call gsl_rng_set(rng, 12_c_long)
+        u1 = gsl_rng_uniform_pos(rng)
+        u2 = gsl_rng_uniform_pos(rng)
+        call gsl_rng_free(rng)
+        r = sqrt(-2*log(u1))
+        angle = 8*atan(1.0_dp)*u2
+        call check(error, abs(z1 - r*cos(angle)) <= 8*eps_d*r .and. &
+            abs(z2 - r*sin(angle)) <= 8*eps_d*r, "first Box-Muller pair of seed 12: " &
+            //str(z1)//", "//str(z2)//" against "//str(r*cos(angle))//", "//str(r*sin(angle)))
+    end subroutine test_first_pair
+
     subroutine test_reproducible(error)
         type(error_t), allocatable, intent(out) :: error
         type(normal_sampler_t) :: sampler

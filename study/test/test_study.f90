@@ -9,7 +9,7 @@ module test_study
     use sphere_row_bisection, only: bisect, bisect_ahead, bisect_changes
     !$ use omp_lib, only: omp_set_num_threads, omp_get_max_threads
     use sphere_row_secant, only: secant, secant_result_t, secant_converged, secant_flat, &
-        secant_left_interval, secant_invalid
+        secant_left_interval, secant_invalid, secant_max_iterations
     use sphere_row, only: itoa, status_word, status_collapsed, real_str
     use sphere_row_tables, only: row_t, tab, write_rows
     use sphere_row_survey, only: survey_t, survey_open, survey_close, survey_scene, &
@@ -36,6 +36,7 @@ contains
         tests = [ &
             new_unittest("secant_known_root", test_secant_root), &
             new_unittest("secant_flat_function", test_secant_flat), &
+            new_unittest("secant_steps_to_its_cap", test_secant_cap), &
             new_unittest("secant_small_slope_leaves", test_secant_leaves), &
             new_unittest("secant_bad_start", test_secant_bad_start), &
             new_unittest("bisect_staircase", test_bisect_staircase), &
@@ -132,6 +133,27 @@ contains
             "x^3 - 2: root "//str(r%x))
         call check(error, r%iterations < 15, "x^3 - 2: too many iterations")
     end subroutine test_secant_root
+
+    !> x^2 = 2 from 1, 2 with at most 3 steps: the secant's iterates, by hand
+    !> in rationals, are 4/3, 7/5 and 58/41; the third is returned with the
+    !> status of the cap.
+    subroutine test_secant_cap(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(secant_result_t) :: r
+        real(qp), parameter :: by_hand(0:4) = [1.0_qp, 2.0_qp, 4.0_qp/3, 7.0_qp/5, 58.0_qp/41]
+        call secant(square_minus_two, 1.0_qp, 2.0_qp, 0.0_qp, 3.0_qp, 1.0e-30_qp, 64*eps, 3, r)
+        call check(error, r%status == secant_max_iterations .and. r%iterations == 3, &
+            "x^2 - 2, 3 steps: not stopped by the cap after 3 steps")
+        call check(error, all(abs(r%xs(0:4) - by_hand) <= 8*eps), &
+            "x^2 - 2, 3 steps: iterates other than 4/3, 7/5, 58/41")
+        call check(error, abs(r%x - 58.0_qp/41) <= 8*eps, "x^2 - 2, 3 steps: x "//str(r%x))
+    end subroutine test_secant_cap
+
+    function square_minus_two(x) result(f)
+        real(qp), intent(in) :: x
+        real(qp) :: f
+        f = x*x - 2
+    end function square_minus_two
 
     !> A constant residual is reported as flat, not returned as a root.
     subroutine test_secant_flat(error)
