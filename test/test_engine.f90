@@ -14,6 +14,27 @@ module test_engine
 
 contains
 
+    !> The definition's row, elastic, with d = 2.5 and a = 0.5: sphere i rests
+    !> at x = 3 (i - 1) until the one behind it arrives at t = (i - 1)/2 and
+    !> moves on at v0, so at the last collision, t = 1.5, the positions are
+    !> 0.5, 3.5, 6.5 and 9 (by hand), the gaps 0.5, 0.5 and 0.
+    subroutine test_cradle_positions(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(scene_t) :: scene
+        type(run_t) :: run
+        integer :: stat
+        character(len=200) :: msg
+        call scene_init(scene, stat, msg, e=1.0_qp, d=2.5_qp, a=0.5_qp)
+        call simulate(scene, run)
+        call check(error, run%n == 3 .and. abs(run%t_end - 1.5_qp) <= 4*eps, &
+            "elastic d = 2.5, a = 0.5: not 3 collisions ending at t = 1.5")
+        call check(error, all(abs(run%x - [0.5_qp, 3.5_qp, 6.5_qp, 9.0_qp]) <= 16*eps), &
+            "elastic d = 2.5, a = 0.5: positions "//str(run%x(1))//" "//str(run%x(2))//" " &
+            //str(run%x(3))//" "//str(run%x(4))//", by hand 0.5, 3.5, 6.5, 9")
+        call check(error, all(abs(run%y(1:2) - 0.5_qp) <= 4*eps) .and. run%y(3) == 0.0_qp, &
+            "elastic d = 2.5, a = 0.5: gaps other than 0.5, 0.5, 0")
+    end subroutine test_cradle_positions
+
     !> The engine's tests.
     function collect_engine() result(tests)
         type(unittest_t), allocatable :: tests(:)
@@ -22,6 +43,7 @@ contains
             new_unittest("momentum_conserved", test_momentum), &
             new_unittest("energy_loss_per_collision", test_energy_loss), &
             new_unittest("elastic_cradle_p2_to_50", test_elastic_cradle), &
+            new_unittest("elastic_cradle_positions", test_cradle_positions), &
             new_unittest("scaling_lengths", test_scaling_lengths), &
             new_unittest("scaling_speed", test_scaling_speed), &
             new_unittest("low_e_grid_terminates", test_low_e), &
