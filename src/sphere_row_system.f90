@@ -1,0 +1,176 @@
+!> What Fortran's own I/O cannot do, through the few system calls of
+!> `sphere_row_system.c`: tell a regular file from a device, a FIFO or a
+!> directory before opening it (reading /dev/zero never ends, opening a FIFO
+!> without a writer blocks), write with every failure reported (gfortran's
+!> run-time library drops the error of a failed write, so a full disk or a
+!> closed stdout would lose output without a word), rename and remove files.
+!>
+!> `text_out_t` collects lines for a file descriptor (standard output by
+!> default) and writes them a block at a time; the first failure is kept and
+!> every later line dropped, so a program checks once, at `finish`.
+module sphere_row_system
+    use, intrinsic :: iso_c_binding, only: c_int, c_char, c_size_t, c_null_char
+    use sphere_row_error, only: error_t, fatal_error, error_output
+    implicit none
+    private
+    public :: path_kind, path_missing, path_regular, path_directory, path_other
+    public :: rename_file, remove_file, system_error_text, text_out_t
+
+    !> Kinds of what a path names (path_kind).
+    integer, parameter :: path_missing = 0, path_regular = 1, path_directory = 2, path_other = 3
+
+    !> Bytes collected before a write to the file descriptor.
+    integer, parameter :: out_block = 65536
+
+    !> Lines for a file descriptor, written a block at a time, every failure
+    !> kept.
+    type :: text_out_t
+        !> The file descriptor (1: standard output).
+        integer(c_int) :: fd = 1_c_int
+        !> What the messages call the destination.
+        character(len=:), allocatable :: name
+        !> Bytes not yet written.
+        character(len=:), allocatable :: buffer
+        integer :: used = 0
+        !> errno of the first failed write, 0 while none failed.
+        integer :: errno = 0
+    contains
+        !> Append a line (its end added).
+        procedure :: put => out_put
+        !> Append text as it is (line ends included by the caller).
+        procedure :: put_text => out_put_text
+        !> Write what is left; an error if any write failed.
+        procedure :: finish => out_finish
+    end type text_out_t
+
+    interface
+        function c_path_kind(path) result(kind) bind(c, name="sphere_row_path_kind")
+            import :: c_int, c_char
+            character(kind=c_char), intent(in) :: path(*)
+            integer(c_int) :: kind
+        end function c_path_kind
+
+        function c_write_all(fd, text, n) result(errno) bind(c, name="sphere_row_write_all")
+            import :: c_int, c_char, c_size_t
+            integer(c_int), value :: fd
+            character(kind=c_char), intent(in) :: text(*)
+            integer(c_size_t), value :: n
+            integer(c_int) :: errno
+        end function c_write_all
+
+        function c_rename(from, to) result(errno) bind(c, name="sphere_row_rename")
+            import :: c_int, c_char
+            character(kind=c_char), intent(in) :: from(*), to(*)
+            integer(c_int) :: errno
+        end function c_rename
+
+        function c_remove(path) result(errno) bind(c, name="sphere_row_remove")
+            import :: c_int, c_char
+            character(kind=c_char), intent(in) :: path(*)
+            integer(c_int) :: errno
+        end function c_remove
+
+        subroutine c_error_text(code, text, n) bind(c, name="sphere_row_error_text")
+            import :: c_int, c_char, c_size_t
+            integer(c_int), value :: code
+            character(kind=c_char), intent(out) :: text(*)
+            integer(c_size_t), value :: n
+        end subroutine c_error_text
+    end interface
+
+contains
+
+    !> What `path` names: path_regular, path_directory, path_other (a device,
+    !> a FIFO, a socket) or path_missing (nothing, or nothing this process
+    !> may look at; `errno` says why).
+    integer function path_kind(path, errno)
+        character(len=*), intent(in) :: path
+        integer, intent(out) :: errno
+        integer(c_int) :: kind
+        kind = c_path_kind(path//c_null_char)
+        errno = 0
+        select case (kind)
+        case (1)
+            path_kind = path_regular
+        case (2)
+            path_kind = path_directory
+        case (3)
+            path_kind = path_other
+        case default
+            path_kind = path_missing
+            errno = -int(kind)
+        end select
+    end function path_kind
+
+    !> Rename `from` to `to` (replacing it); 0 or the errno of the failure.
+    integer function rename_file(from, to)
+        character(len=*), intent(in) :: from, to
+        rename_file = int(c_rename(from//c_null_char, to//c_null_char))
+    end function rename_file
+
+    !> Remove the file `path`; 0 or the errno of the failure.
+    integer function remove_file(path)
+        character(len=*), intent(in) :: path
+        remove_file = int(c_remove(path//c_null_char))
+    end function remove_file
+
+    !> The system's text of an errno ("No space left on device").
+    function system_error_text(errno) result(text)
+        integer, intent(in) :: errno
+        character(len=:), allocatable :: text
+        character(kind=c_char, len=200) :: buffer
+        integer :: zero
+        buffer = ""
+        call c_error_text(int(errno, c_int), buffer, int(len(buffer), c_size_t))
+        zero = index(buffer, c_null_char)
+        if (zero == 0) zero = len(buffer) + 1
+        text = buffer(:zero - 1)
+    end function system_error_text
+
+    subroutine out_put(this, line)
+        class(text_out_t), intent(inout) :: this
+        character(len=*), intent(in) :: line
+        call this%put_text(line//new_line("a"))
+    end subroutine out_put
+
+    subroutine out_put_text(this, text)
+        class(text_out_t), intent(inout) :: this
+        character(len=*), intent(in) :: text
+        if (.not. allocated(this%buffer)) allocate (character(len=out_block) :: this%buffer)
+        if (this%used + len(text) > len(this%buffer)) call write_buffer(this)
+        if (len(text) > len(this%buffer)) then
+            call write_bytes(this, text)
+        else
+            this%buffer(this%used + 1:this%used + len(text)) = text
+            this%used = this%used + len(text)
+        end if
+    end subroutine out_put_text
+
+    !> Write the rest; `error` (code error_output) names the destination and
+    !> the system's reason if any write failed.
+    subroutine out_finish(this, error)
+        class(text_out_t), intent(inout) :: this
+        type(error_t), allocatable, intent(out) :: error
+        character(len=:), allocatable :: name
+        call write_buffer(this)
+        if (this%errno == 0) return
+        name = "standard output"
+        if (allocated(this%name)) name = this%name
+        call fatal_error(error, "output = "//name//": cannot be written (" &
+            //system_error_text(this%errno)//"); allowed a writable output", error_output)
+    end subroutine out_finish
+
+    subroutine write_buffer(this)
+        class(text_out_t), intent(inout) :: this
+        if (this%used > 0) call write_bytes(this, this%buffer(:this%used))
+        this%used = 0
+    end subroutine write_buffer
+
+    subroutine write_bytes(this, text)
+        class(text_out_t), intent(inout) :: this
+        character(len=*), intent(in) :: text
+        if (this%errno /= 0) return
+        this%errno = int(c_write_all(this%fd, text, int(len(text), c_size_t)))
+    end subroutine write_bytes
+
+end module sphere_row_system
