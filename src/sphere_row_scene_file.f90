@@ -11,12 +11,12 @@
 !> writer blocks) or a directory is refused before it is opened; so is a file
 !> longer than max_file_bytes or holding a control character (a binary file).
 module sphere_row_scene_file
-    use, intrinsic :: iso_fortran_env, only: input_unit, int64, iostat_end, iostat_eor
+    use, intrinsic :: iso_fortran_env, only: int64
     use sphere_row_format, only: itoa
     use sphere_row_error, only: error_t, fatal_error, error_io
     use sphere_row_read, only: printable, lower
     use sphere_row_system, only: path_kind, path_regular, path_directory, path_other, &
-        system_error_text
+        system_error_text, read_some
     implicit none
     private
     public :: scene_item_t, read_scene_text, scene_items, join_values, file_origin
@@ -59,7 +59,7 @@ contains
             call read_regular_file(path, raw, error)
         end if
         if (allocated(error)) return
-        call check_bytes(path, raw, error)
+        if (path /= "-") call check_bytes(path, raw, error)
         if (allocated(error)) return
         call blank_comments(raw, text)
     end subroutine read_scene_text
@@ -108,62 +108,58 @@ contains
         end subroutine refuse
     end subroutine read_regular_file
 
-    !> Standard input to its end, in blocks, line ends kept; refused as soon
-    !> as it is longer than max_file_bytes or a block holds a control byte.
+    !> Standard input to its end, in blocks, into a buffer that doubles;
+    !> refused as soon as it is longer than max_file_bytes or a block holds a
+    !> control byte.
     subroutine read_stdin(raw, error)
         character(len=:), allocatable, intent(out) :: raw
         type(error_t), allocatable, intent(out) :: error
         character(len=stdin_block) :: block
         character(len=:), allocatable :: grown
-        character(len=512) :: iomsg
-        integer :: used, n, ios
+        integer :: used, n, errno
         allocate (character(len=stdin_block) :: raw)
         used = 0
         do
-            read (input_unit, "(a)", advance="no", iostat=ios, iomsg=iomsg, size=n) block
-            if (ios /= 0 .and. ios /= iostat_eor .and. ios /= iostat_end) then
-                call fatal_error(error, file_origin("-")//"cannot be read ("//trim(iomsg) &
-                    //"); allowed a scene on standard input", error_io)
+            call read_some(0, block, n, errno)
+            if (errno /= 0) then
+                call fatal_error(error, file_origin("-")//"cannot be read (" &
+                    //system_error_text(errno)//"); allowed a scene on standard input", error_io)
                 return
             end if
-            if (ios == iostat_end .and. n == 0) exit
-            call append(block(:n))
-            if (ios == iostat_eor) call append(new_line("a"))
-            if (allocated(error)) return
-            if (ios == iostat_end) exit
-        end do
-        raw = raw(:used)
-    contains
-        subroutine append(piece)
-            character(len=*), intent(in) :: piece
-            if (used + len(piece) > max_file_bytes) then
+            if (n == 0) exit
+            if (used + n > max_file_bytes) then
                 call fatal_error(error, file_origin("-")//"longer than "//itoa(max_file_bytes) &
                     //" bytes; allowed a scene file of at most that length", error_io)
                 return
             end if
-            call check_bytes("-", piece, error)
+            call check_bytes("-", block(:n), error, used)
             if (allocated(error)) return
-            if (used + len(piece) > len(raw)) then
-                allocate (character(len=max(2*len(raw), used + len(piece))) :: grown)
+            if (used + n > len(raw)) then
+                allocate (character(len=max(2*len(raw), used + n)) :: grown)
                 grown(:used) = raw(:used)
                 call move_alloc(grown, raw)
             end if
-            raw(used + 1:used + len(piece)) = piece
-            used = used + len(piece)
-        end subroutine append
+            raw(used + 1:used + n) = block(:n)
+            used = used + n
+        end do
+        raw = raw(:used)
     end subroutine read_stdin
 
     !> Refuse a text holding a control character other than tab, line feed
     !> and carriage return: a binary file, not a scene.
-    pure subroutine check_bytes(path, raw, error)
+    pure subroutine check_bytes(path, raw, error, before)
         character(len=*), intent(in) :: path, raw
         type(error_t), allocatable, intent(out) :: error
-        integer :: i, c
+        !> Bytes of the file before `raw` (default 0).
+        integer, intent(in), optional :: before
+        integer :: i, c, offset
+        offset = 0
+        if (present(before)) offset = before
         do i = 1, len(raw)
             c = iachar(raw(i:i))
             if (c >= 32 .and. c /= 127) cycle
             if (c == 9 .or. c == 10 .or. c == 13) cycle
-            call fatal_error(error, file_origin(path)//"byte "//itoa(i)//" is the control " &
+            call fatal_error(error, file_origin(path)//"byte "//itoa(offset + i)//" is the control " &
                 //"character "//printable(raw(i:i))//"; allowed a text file (tabs and line " &
                 //"ends are the only control characters)")
             return

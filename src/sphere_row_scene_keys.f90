@@ -152,7 +152,7 @@ contains
                 if (xs(i) == 0.0_qp .or. (abs(xs(i)) >= low .and. abs(xs(i)) <= top)) cycle
                 which = "precision = dp: "
                 if (name == "masses" .or. name == "gaps") &
-                    which = "value "//itoa(i)//" is "//short_text(xs(i))//": "
+                    which = which//"value "//itoa(i)//" is "//short_text(xs(i))//": "
                 if (abs(xs(i)) > top) then
                     which = which//"beyond the largest real(8) number "//short_text(top, 3, "down")
                 else

@@ -1,6 +1,7 @@
 /* The few calls of the operating system that Fortran's own I/O cannot make:
  * what kind of file a path names (so that a device or a FIFO is never opened
- * for reading), writes whose failure is reported (gfortran's run-time
+ * for reading), reads of standard input in blocks of any length, writes whose
+ * failure is reported (gfortran's run-time
  * library drops the error of a write that fails, e.g. on a full disk), and
  * renaming or removing a file. Each returns 0 or the errno of the failure. */
 #include <errno.h>
@@ -34,6 +35,17 @@ int sphere_row_write_all(int fd, const char *text, size_t n)
         n -= (size_t)done;
     }
     return 0;
+}
+
+/* Up to n bytes from fd into text: the count read (0 at the end of the
+ * input), or -errno. */
+long sphere_row_read_some(int fd, char *text, size_t n)
+{
+    for (;;) {
+        ssize_t done = read(fd, text, n);
+        if (done >= 0) return (long)done;
+        if (errno != EINTR) return -(long)errno;
+    }
 }
 
 int sphere_row_rename(const char *from, const char *to)

@@ -9,12 +9,12 @@
 !> default) and writes them a block at a time; the first failure is kept and
 !> every later line dropped, so a program checks once, at `finish`.
 module sphere_row_system
-    use, intrinsic :: iso_c_binding, only: c_int, c_char, c_size_t, c_null_char
+    use, intrinsic :: iso_c_binding, only: c_int, c_long, c_char, c_size_t, c_null_char
     use sphere_row_error, only: error_t, fatal_error, error_output
     implicit none
     private
     public :: path_kind, path_missing, path_regular, path_directory, path_other
-    public :: rename_file, remove_file, system_error_text, text_out_t
+    public :: rename_file, remove_file, system_error_text, text_out_t, read_some
 
     !> Kinds of what a path names (path_kind).
     integer, parameter :: path_missing = 0, path_regular = 1, path_directory = 2, path_other = 3
@@ -57,6 +57,14 @@ module sphere_row_system
             integer(c_size_t), value :: n
             integer(c_int) :: errno
         end function c_write_all
+
+        function c_read_some(fd, text, n) result(count) bind(c, name="sphere_row_read_some")
+            import :: c_int, c_long, c_char, c_size_t
+            integer(c_int), value :: fd
+            character(kind=c_char), intent(out) :: text(*)
+            integer(c_size_t), value :: n
+            integer(c_long) :: count
+        end function c_read_some
 
         function c_rename(from, to) result(errno) bind(c, name="sphere_row_rename")
             import :: c_int, c_char
@@ -101,6 +109,19 @@ contains
             errno = -int(kind)
         end select
     end function path_kind
+
+    !> Read what file descriptor `fd` (0: standard input) has, up to the
+    !> length of `text`: `count` bytes (0 at the end of the input), or
+    !> `errno` not 0 if the read failed.
+    subroutine read_some(fd, text, count, errno)
+        integer, intent(in) :: fd
+        character(len=*), intent(out) :: text
+        integer, intent(out) :: count, errno
+        integer(c_long) :: got
+        got = c_read_some(int(fd, c_int), text, int(len(text), c_size_t))
+        count = int(max(0_c_long, got))
+        errno = int(max(0_c_long, -got))
+    end subroutine read_some
 
     !> Rename `from` to `to` (replacing it); 0 or the errno of the failure.
     integer function rename_file(from, to)
