@@ -205,7 +205,8 @@ contains
         key%allowed = ""
         do i = 1, size(choices)
             key%choices = key%choices//trim(choices(i))//","
-            if (i > 1) key%allowed = key%allowed//trim(merge(" or", ",  ", i == size(choices)))//" "
+            if (i > 1) key%allowed = key%allowed//trim(merge(" or", ",  ", i == size(choices))) &
+                //" "
             key%allowed = key%allowed//trim(choices(i))
         end do
         call append_key(this, key)

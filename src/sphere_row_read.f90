@@ -250,7 +250,8 @@ contains
             case (2)
                 shown(n + 1:n + 2) = "\"//merge("n", merge("t", "r", c == 9), c == 10)
             case default
-                shown(n + 1:n + 4) = "\x"//hex(c/16 + 1:c/16 + 1)//hex(mod(c, 16) + 1:mod(c, 16) + 1)
+                shown(n + 1:n + 4) = "\x"//hex(c/16 + 1:c/16 + 1) &
+                    //hex(mod(c, 16) + 1:mod(c, 16) + 1)
             end select
             n = n + escaped_length(c)
         end do

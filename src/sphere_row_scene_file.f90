@@ -159,8 +159,8 @@ contains
             c = iachar(raw(i:i))
             if (c >= 32 .and. c /= 127) cycle
             if (c == 9 .or. c == 10 .or. c == 13) cycle
-            call fatal_error(error, file_origin(path)//"byte "//itoa(offset + i)//" is the control " &
-                //"character "//printable(raw(i:i))//"; allowed a text file (tabs and line " &
+            call fatal_error(error, file_origin(path)//"byte "//itoa(offset + i) &
+                //" is the control character "//printable(raw(i:i))//"; allowed a text file (tabs and line " &
                 //"ends are the only control characters)")
             return
         end do

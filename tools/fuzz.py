@@ -206,6 +206,9 @@ def make_case(rng, index):
             args.append("%s=%s" % (key, value(rng, key, p)))
         if rng.random() < 0.1:
             args.append(rng.choice(["--", "-", "x", "", "=", "==", "e==1", "e=1=2"]))
+        if rng.random() < 0.3:
+            # the other precisions take the same values through other checks
+            args.append(rng.choice(["precision=dp", "precision=auto"]))
         return Case([a.encode("utf-8", "surrogateescape") for a in args])
     if kind < 0.6:
         # a valid command line, mutated
@@ -296,7 +299,7 @@ def check_refusal(out, err):
 # table of a row longer than EVENTS_P_MOST (big output, written in full) is
 # not asked for
 RUN_CAP = b"max_collisions=3000"
-EVENTS_P_MOST = 500
+EVENTS_P_MOST = 64
 
 
 def keep_short(args):
@@ -392,7 +395,12 @@ def main():
     for i, breach, described in breaches[:50]:
         print("fuzz: input %d: %s: %s" % (i, breach, described))
     if breaches:
-        print("fuzz: %d inputs broke the contract" % len(breaches))
+        kinds = {}
+        for _, breach, _ in breaches:
+            kind = re.sub(r"[:(].*", "", breach).strip()
+            kinds[kind] = kinds.get(kind, 0) + 1
+        print("fuzz: %d inputs broke the contract: %s" % (len(breaches), "; ".join(
+            "%d %s" % (n, k) for k, n in sorted(kinds.items(), key=lambda kn: -kn[1]))))
     over = options.time_limit > 0 and seconds > options.time_limit
     if over:
         print("fuzz: %.1f s is over the time limit of %g s" % (seconds, options.time_limit))

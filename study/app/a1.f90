@@ -8,7 +8,7 @@ program c12_a1
         event_collapse, itoa
     use sphere_row_tables, only: open_table, close_table, write_answer, answer_header, tab
     use sphere_row_study_cli, only: cli_t, add_scene_keys, start_program, read_keys, fail, &
-        stop_unless_normal
+        stop_unless_normal, stop_unless_written
     implicit none
     character(len=*), parameter :: nl = new_line("a")
     type(cli_t) :: cli
@@ -81,7 +81,7 @@ contains
                 "gap at the last collision; afterwards it grows at dy = "//str(run%dy(i)))
         end do
         call close_table(unit, stat, msg)
-        call stop_unless_normal(stat, msg)
+        call stop_unless_written(stat, msg)
     end subroutine write_answers
 
     !> The gaps at their breakpoints: the start, every event inside the window,
@@ -123,7 +123,7 @@ contains
         end do
         write (unit, "(a)") line//tab//"window_end"//tab//"0"//tab//"0"
         call close_table(unit, stat, msg)
-        call stop_unless_normal(stat, msg)
+        call stop_unless_written(stat, msg)
     end subroutine write_paths
 
 end program c12_a1

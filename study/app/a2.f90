@@ -5,7 +5,7 @@ program c12_a2
         status_collapsed, itoa
     use sphere_row_tables, only: open_table, close_table, write_answer, answer_header, tab
     use sphere_row_study_cli, only: cli_t, add_scene_keys, start_program, read_keys, fail, &
-        stop_unless_normal
+        stop_unless_normal, stop_unless_written
     implicit none
     character(len=*), parameter :: nl = new_line("a")
     type(cli_t) :: cli
@@ -53,7 +53,7 @@ program c12_a2
     call row("elastic", 1.0_qp, elastic)
     call row("quasi_plastic", e_plastic, plastic)
     call close_table(unit, stat, msg)
-    call stop_unless_normal(stat, msg)
+    call stop_unless_written(stat, msg)
 
     call open_table(out, "a2_answers.tsv", answer_header, unit, stat, msg)
     call stop_unless_normal(stat, msg)
@@ -86,7 +86,7 @@ program c12_a2
             "perfectly plastic limit: common velocity m1 v0 / sum(m) by momentum")
     end do
     call close_table(unit, stat, msg)
-    call stop_unless_normal(stat, msg)
+    call stop_unless_written(stat, msg)
 
 contains
 

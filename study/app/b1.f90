@@ -10,7 +10,7 @@ program c12_b1
         critical_restitution
     use sphere_row_bisection, only: bisect_ahead, bisect_changes
     use sphere_row_study_cli, only: cli_t, add_scene_keys, start_program, read_keys, &
-        stop_unless_normal, add_precision_key, precision_is_auto
+        stop_unless_normal, stop_unless_written, add_precision_key, precision_is_auto
     use sphere_row_sorting, only: sort
     implicit none
     character(len=*), parameter :: nl = new_line("a")
@@ -113,7 +113,7 @@ contains
         !$omp end parallel do
         call write_rows(unit, scan_rows)
         call close_table(unit, stat, msg)
-        call stop_unless_normal(stat, msg)
+        call stop_unless_written(stat, msg)
     end subroutine scan
 
     !> Step 2: every change of (n, sequence) between neighbours of the scan,
@@ -255,7 +255,7 @@ contains
             end associate
         end do
         call close_table(unit, stat, msg)
-        call stop_unless_normal(stat, msg)
+        call stop_unless_written(stat, msg)
         slope = 0
         intercept = 0
         if (n_fit >= 2) then
@@ -287,7 +287,7 @@ contains
             itoa(scene%p - 1), itoa(n_scan_runs(1) - (scene%p - 1)), &
             "e = 1: one collision per pair")
         call close_table(unit, stat, msg)
-        call stop_unless_normal(stat, msg)
+        call stop_unless_written(stat, msg)
     end subroutine write_answers
 
     !> The answers about e_crit: from the collapse cycle and by simulation
@@ -377,7 +377,7 @@ contains
             n_intervals = n_intervals + 1
         end if
         call close_table(unit, stat, msg)
-        call stop_unless_normal(stat, msg)
+        call stop_unless_written(stat, msg)
     end subroutine write_intervals
 
     !> Whether the run at e with the scene's tolerance collapses (own scene and run: thread-safe).

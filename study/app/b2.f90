@@ -9,7 +9,7 @@ program c12_b2
     use sphere_row_analysis, only: sequence_of, sequence_text, sequence_hash, &
         sequence_polynomials, poly_eval
     use sphere_row_study_cli, only: cli_t, add_scene_keys, start_program, read_keys, &
-        stop_unless_normal, add_precision_key, precision_is_auto
+        stop_unless_normal, stop_unless_written, add_precision_key, precision_is_auto
     implicit none
     character(len=*), parameter :: nl = new_line("a")
     !> Sequences longer than this are not written out as polynomials.
@@ -108,9 +108,9 @@ contains
         end do
         call write_rows(unit, rows)
         call close_table(unit, stat, msg)
-        call stop_unless_normal(stat, msg)
+        call stop_unless_written(stat, msg)
         call close_table(unit_forms, stat, msg)
-        call stop_unless_normal(stat, msg)
+        call stop_unless_written(stat, msg)
     end subroutine tabulate
 
     !> Every point's run, in the precision it needs (precision = auto) or in
@@ -272,7 +272,7 @@ contains
                 "common velocity m1 v0 / sum(m)")
         end do
         call close_table(unit, stat, msg)
-        call stop_unless_normal(stat, msg)
+        call stop_unless_written(stat, msg)
     end subroutine write_answers
 
     !> One row per sphere: the polynomial of the current sequence and the grid

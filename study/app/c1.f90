@@ -8,7 +8,7 @@ program c12_c1
     use sphere_row_analysis, only: sequence_of, sequence_text
     use sphere_row_secant, only: secant, secant_result_t, secant_word, secant_converged
     use sphere_row_study_cli, only: cli_t, add_scene_keys, start_program, read_keys, fail, &
-        stop_unless_normal
+        stop_unless_normal, stop_unless_written
     implicit none
     character(len=*), parameter :: name = "c12-c1"
     character(len=*), parameter :: nl = new_line("a")
@@ -60,7 +60,7 @@ program c12_c1
         write (unit, "(a)") itoa(k)//tab//str(main_result%xs(k))//tab//str(main_result%fs(k))
     end do
     call close_table(unit, stat, msg)
-    call stop_unless_normal(stat, msg)
+    call stop_unless_written(stat, msg)
 
     call open_table(out, "c1_starts.tsv", "x0"//tab//"x1"//tab//"status"//tab//"iterations" &
         //tab//"e_last"//tab//"residual[V]", unit, stat, msg)
@@ -72,7 +72,7 @@ program c12_c1
             str(trial%f)
     end do
     call close_table(unit, stat, msg)
-    call stop_unless_normal(stat, msg)
+    call stop_unless_written(stat, msg)
 
     call write_answers()
     if (main_result%status /= secant_converged) then
@@ -111,7 +111,7 @@ contains
             "flat, left_interval and stagnated are reported, not returned as roots; "// &
             "see c1_starts.tsv")
         call close_table(unit, stat, msg)
-        call stop_unless_normal(stat, msg)
+        call stop_unless_written(stat, msg)
     end subroutine write_answers
 
     !> v4(e) - target v0, the residual of the boundary value problem.

@@ -10,7 +10,8 @@
 program c12_ecrit
     use sphere_row, only: qp, str, itoa
     use sphere_row_tables, only: open_table, close_table, write_answer, answer_header, tab
-    use sphere_row_study_cli, only: cli_t, start_program, read_keys, fail, stop_unless_normal
+    use sphere_row_study_cli, only: cli_t, start_program, read_keys, fail, stop_unless_normal, &
+        stop_unless_written
     use sphere_row_ecrit, only: ecrit_settings_t, ecrit_row_t, ecrit_row, row_estimate, &
         power_fit, mcnamara_young_k, mcnamara_young_e, outcome_word, row_bytes, row_from_bytes
     use sphere_row_ranks, only: ranks_t, record_t, ranks_start, ranks_finish, owner_of, &
@@ -161,7 +162,7 @@ contains
             end associate
         end do
         call close_table(unit, stat, msg)
-        call stop_unless_normal(stat, msg)
+        call stop_unless_written(stat, msg)
     end subroutine write_rows
 
     !> ecrit_answers.tsv: the rate-map answers and the counts over the rows.
@@ -197,7 +198,7 @@ contains
             "K of p = K (-ln(1 - e_crit))/(1 - e_crit), McNamara and Young's scaling, least "// &
             "squares through the origin over the same rows")
         call close_table(unit, stat, msg)
-        call stop_unless_normal(stat, msg)
+        call stop_unless_written(stat, msg)
     end subroutine write_answers
 
     !> The rate-map answer of row p, with the closed form `check` if given.

@@ -15,7 +15,7 @@ program c12_methods
         method_stepping, stepper_rk8pd, stepper_rkf45, engine_methods, method_time
     use sphere_row_kind_engines, only: kind_info, kind_info_t
     use sphere_row_study_cli, only: cli_t, start_program, read_keys, fail, stop_unless_normal, &
-        say
+        stop_unless_written, say
     use sphere_row_bisection, only: bisect
     use sphere_row_method_runs, only: scene_at, reference_run, prepare_method
     implicit none
@@ -145,8 +145,8 @@ contains
         type(scene_t) :: scene
         real(qp) :: seconds, err
         integer :: s, m, unit, unit_cost, runs, batches
-        call open_table(out_dir, "methods_work_precision.tsv", "scene"//tab//"e[1]"//tab//"e_minus_ec[1]"//tab//"label"//tab &
-            //"method"//tab &
+        call open_table(out_dir, "methods_work_precision.tsv", "scene"//tab//"e[1]"//tab &
+            //"e_minus_ec[1]"//tab//"label"//tab//"method"//tab &
             //"kind"//tab//"setting[1|L/V]"//tab//"cpu_per_run[s]"//tab//"batches"//tab &
             //"runs_per_batch"//tab//"collisions"//tab//"collisions_ref"//tab//"same_count" &
             //tab//"same_sequence"//tab//"matched"//tab//"v_error[V]"//tab//"t_error[L/V]" &
@@ -191,9 +191,9 @@ contains
             end do
         end do
         call close_table(unit, stat, msg)
-        call stop_unless_normal(stat, msg)
+        call stop_unless_written(stat, msg)
         call close_table(unit_cost, stat, msg)
-        call stop_unless_normal(stat, msg)
+        call stop_unless_written(stat, msg)
     end subroutine work_precision
 
     !> methods_stability.tsv: the category of each method on the map over e,
@@ -265,7 +265,7 @@ contains
             end do
         end do
         call close_table(unit, stat, msg)
-        call stop_unless_normal(stat, msg)
+        call stop_unless_written(stat, msg)
     end subroutine stability
 
     !> methods_min_distance.tsv: for each precision of the engine (and of the
@@ -328,7 +328,7 @@ contains
                 //tab//str(10.0_qp**(-ref_limit))
         end do
         call close_table(unit, stat, msg)
-        call stop_unless_normal(stat, msg)
+        call stop_unless_written(stat, msg)
     end subroutine min_distance
 
     !> Whether the method `tested` misses the reference's collision sequence
@@ -382,7 +382,7 @@ contains
         write (unit, "(a)") "min_time[s]"//tab//str(real(min_time, dp))
         write (unit, "(a)") "stepping_max_steps"//tab//itoa(max_steps)
         call close_table(unit, stat, msg)
-        call stop_unless_normal(stat, msg)
+        call stop_unless_written(stat, msg)
     end subroutine platform
 
 end program c12_methods

@@ -4,7 +4,8 @@
 program c12_summary
     use sphere_row_tables, only: open_table, close_table, tab, split_tabs
     use sphere_row, only: qp, short_text
-    use sphere_row_study_cli, only: cli_t, start_program, read_keys, fail, stop_unless_normal
+    use sphere_row_study_cli, only: cli_t, start_program, read_keys, fail, stop_unless_normal, &
+        stop_unless_written
     implicit none
     character(len=*), parameter :: nl = new_line("a")
     character(len=*), parameter :: tasks(8) = ["a1      ", "a2      ", "b1      ", &
@@ -30,7 +31,7 @@ program c12_summary
     call sections_c()
     call sections_beyond()
     call close_table(md, stat, msg)
-    call stop_unless_normal(stat, msg)
+    call stop_unless_written(stat, msg)
 
 contains
 
@@ -188,7 +189,7 @@ contains
             call answer_rows(trim(tasks(i)), "table")
         end do
         call close_table(answers, stat, msg)
-        call stop_unless_normal(stat, msg)
+        call stop_unless_written(stat, msg)
     end subroutine write_overview
 
     !> Every task's answer table must be there.

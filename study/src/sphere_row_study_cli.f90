@@ -18,12 +18,13 @@ module sphere_row_study_cli
     use sphere_row, only: scene_t, status_normal
     use sphere_row_cli, only: cli_t, read_command_line, fail_with => fail
     use sphere_row_scene_keys, only: scene_from_cli, add_scene_keys
-    use sphere_row_error, only: error_t, fatal_error
+    use sphere_row_error, only: error_t, fatal_error, error_output
     use sphere_row_tables, only: discard_tables
     use sphere_row_system, only: text_out_t
     implicit none
     private
-    public :: cli_t, add_scene_keys, start_program, read_keys, fail, stop_unless_normal
+    public :: cli_t, add_scene_keys, start_program, read_keys, fail, stop_unless_normal, &
+        stop_unless_written
     public :: add_precision_key, precision_is_auto, say
 
     !> The running program's name, the prefix of its messages.
@@ -129,5 +130,16 @@ contains
         character(len=*), intent(in) :: msg
         if (stat /= status_normal) call fail_text(msg)
     end subroutine stop_unless_normal
+
+    !> Fail with exit status 1 unless `stat` is status_normal: for a table
+    !> that could not be written (close_table), not for bad input.
+    subroutine stop_unless_written(stat, msg)
+        integer, intent(in) :: stat
+        character(len=*), intent(in) :: msg
+        type(error_t), allocatable :: error
+        if (stat == status_normal) return
+        call fatal_error(error, trim(msg), error_output)
+        call fail_error(error)
+    end subroutine stop_unless_written
 
 end module sphere_row_study_cli
