@@ -97,7 +97,7 @@ module sphere_row_cli
         procedure :: get_reals => cli_get_reals
         !> The value of a flag key.
         procedure :: get_flag => cli_get_flag
-        !> The value of a word key.
+        !> The value of a word or choice key.
         procedure :: get_word => cli_get_word
         !> The value of a key as given (or its default), for messages.
         procedure :: get_text => cli_get_text

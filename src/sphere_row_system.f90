@@ -29,8 +29,9 @@ module sphere_row_system
         integer(c_int) :: fd = 1_c_int
         !> What the messages call the destination.
         character(len=:), allocatable :: name
-        !> Bytes not yet written.
+        !> Bytes not yet written: the first `used` of `buffer`.
         character(len=:), allocatable :: buffer
+        !> How many bytes of `buffer` are in use.
         integer :: used = 0
         !> errno of the first failed write, 0 while none failed.
         integer :: errno = 0

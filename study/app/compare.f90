@@ -36,7 +36,8 @@ program tsv_compare
     listing = "build/tsv-compare.list"
     call execute_command_line("mkdir -p build && ls -1 '"//fresh//"' | grep '\.tsv$' > " &
         //listing, exitstat=stat)
-    if (stat /= 0) call fail("fresh = "//fresh//": no .tsv files found")
+    if (stat /= 0) call fail("fresh = "//fresh//": no list of its .tsv files (none there, " &
+        //"or build/ cannot be written); allowed a directory of tables and a writable build/")
     open (newunit=unit, file=listing, status="old", action="read")
     n_files = 0
     n_values = 0
