@@ -100,8 +100,9 @@ contains
         if (maxval(scene%a) > scene%d) length_key = merge("gaps", "a   ", cli%given("gaps"))
         if (run%status == status_invalid .or. .not. finite([run%t_end, run%collapse_t])) then
             call refuse_time(kind_name, error)
-            if (.not. allocated(error) .and. run%status == status_invalid) &
+            if (.not. allocated(error) .and. run%status == status_invalid) then
                 call fatal_error(error, trim(run%message))
+            end if
             return
         end if
         if (.not. finite(run%v)) then

@@ -144,8 +144,9 @@ contains
         select case (key%kind)
         case (key_int)
             call read_int(key%name, key%text, key%n, error, key%allowed)
-            if (.not. allocated(error) .and. (key%n < key%ilo .or. key%n > key%ihi)) &
+            if (.not. allocated(error) .and. (key%n < key%ilo .or. key%n > key%ihi)) then
                 call refuse(key, "", error)
+            end if
         case (key_real)
             call read_real(key%name, key%text, key%x, error, key%allowed)
             if (.not. allocated(error)) call check_real(key, key%text, "", key%x, error)
@@ -156,8 +157,9 @@ contains
             key%flag = same_text(key%text, "yes")
             if (.not. key%flag .and. .not. same_text(key%text, "no")) call refuse(key, "", error)
         case (key_choice)
-            if (index(key%text, ",") > 0 .or. index(key%choices, ","//key%text//",") == 0) &
+            if (index(key%text, ",") > 0 .or. index(key%choices, ","//key%text//",") == 0) then
                 call refuse(key, "", error)
+            end if
         case default
             ! a word: printable text, no blank at either end
             if (len(key%text) == 0 .or. has_control(key%text)) then

@@ -16,7 +16,7 @@ module sphere_row_scene_file
     use sphere_row_error, only: error_t, fatal_error, error_io
     use sphere_row_read, only: printable, lower
     use sphere_row_system, only: path_kind, path_regular, path_directory, path_other, &
-        system_error_text, read_some
+        system_error_text, read_some, read_block
     implicit none
     private
     public :: scene_item_t, read_scene_text, scene_items, join_values, file_origin
@@ -25,9 +25,6 @@ module sphere_row_scene_file
     !> The longest scene file: two lists of a million numbers of some 40
     !> characters each, with room to spare.
     integer, parameter :: max_file_bytes = 2**28
-
-    !> Bytes read from standard input at a time.
-    integer, parameter :: stdin_block = 65536
 
     !> One item `name = values` of a scene file, as written.
     type :: scene_item_t
@@ -114,10 +111,10 @@ contains
     subroutine read_stdin(raw, error)
         character(len=:), allocatable, intent(out) :: raw
         type(error_t), allocatable, intent(out) :: error
-        character(len=stdin_block) :: block
+        character(len=read_block) :: block
         character(len=:), allocatable :: grown
         integer :: used, n, errno
-        allocate (character(len=stdin_block) :: raw)
+        allocate (character(len=read_block) :: raw)
         used = 0
         do
             call read_some(0, block, n, errno)
@@ -160,8 +157,8 @@ contains
             if (c >= 32 .and. c /= 127) cycle
             if (c == 9 .or. c == 10 .or. c == 13) cycle
             call fatal_error(error, file_origin(path)//"byte "//itoa(offset + i) &
-                //" is the control character "//printable(raw(i:i))//"; allowed a text file (tabs and line " &
-                //"ends are the only control characters)")
+                //" is the control character "//printable(raw(i:i))//"; allowed a text file " &
+                //"(tabs and line ends are the only control characters)")
             return
         end do
     end subroutine check_bytes

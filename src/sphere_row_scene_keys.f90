@@ -151,8 +151,9 @@ contains
             do i = 1, size(xs)
                 if (xs(i) == 0.0_qp .or. (abs(xs(i)) >= low .and. abs(xs(i)) <= top)) cycle
                 which = "precision = dp: "
-                if (name == "masses" .or. name == "gaps") &
+                if (name == "masses" .or. name == "gaps") then
                     which = which//"value "//itoa(i)//" is "//short_text(xs(i))//": "
+                end if
                 if (abs(xs(i)) > top) then
                     which = which//"beyond the largest real(8) number "//short_text(top, 3, "down")
                 else

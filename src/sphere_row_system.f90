@@ -9,18 +9,21 @@
 !> default) and writes them a block at a time; the first failure is kept and
 !> every later line dropped, so a program checks once, at `finish`.
 module sphere_row_system
-    use, intrinsic :: iso_c_binding, only: c_int, c_long, c_char, c_size_t, c_null_char
+    use, intrinsic :: iso_c_binding, only: c_int, c_long, c_char, c_size_t, c_null_char, &
+        c_ptr, c_loc
     use sphere_row_error, only: error_t, fatal_error, error_output
     implicit none
     private
     public :: path_kind, path_missing, path_regular, path_directory, path_other
-    public :: rename_file, remove_file, system_error_text, text_out_t, read_some
+    public :: rename_file, remove_file, system_error_text, text_out_t, read_some, read_block
 
     !> Kinds of what a path names (path_kind).
     integer, parameter :: path_missing = 0, path_regular = 1, path_directory = 2, path_other = 3
 
     !> Bytes collected before a write to the file descriptor.
     integer, parameter :: out_block = 65536
+    !> Bytes read_some reads at most.
+    integer, parameter :: read_block = 65536
 
     !> Lines for a file descriptor, written a block at a time, every failure
     !> kept.
@@ -44,45 +47,47 @@ module sphere_row_system
         procedure :: finish => out_finish
     end type text_out_t
 
+    ! The C functions take their texts by address: a zero-ended copy made by
+    ! c_text, or the buffer of the caller.
     interface
         function c_path_kind(path) result(kind) bind(c, name="sphere_row_path_kind")
-            import :: c_int, c_char
-            character(kind=c_char), intent(in) :: path(*)
+            import :: c_int, c_ptr
+            type(c_ptr), value :: path
             integer(c_int) :: kind
         end function c_path_kind
 
         function c_write_all(fd, text, n) result(errno) bind(c, name="sphere_row_write_all")
-            import :: c_int, c_char, c_size_t
+            import :: c_int, c_ptr, c_size_t
             integer(c_int), value :: fd
-            character(kind=c_char), intent(in) :: text(*)
+            type(c_ptr), value :: text
             integer(c_size_t), value :: n
             integer(c_int) :: errno
         end function c_write_all
 
         function c_read_some(fd, text, n) result(count) bind(c, name="sphere_row_read_some")
-            import :: c_int, c_long, c_char, c_size_t
+            import :: c_int, c_long, c_ptr, c_size_t
             integer(c_int), value :: fd
-            character(kind=c_char), intent(out) :: text(*)
+            type(c_ptr), value :: text
             integer(c_size_t), value :: n
             integer(c_long) :: count
         end function c_read_some
 
         function c_rename(from, to) result(errno) bind(c, name="sphere_row_rename")
-            import :: c_int, c_char
-            character(kind=c_char), intent(in) :: from(*), to(*)
+            import :: c_int, c_ptr
+            type(c_ptr), value :: from, to
             integer(c_int) :: errno
         end function c_rename
 
         function c_remove(path) result(errno) bind(c, name="sphere_row_remove")
-            import :: c_int, c_char
-            character(kind=c_char), intent(in) :: path(*)
+            import :: c_int, c_ptr
+            type(c_ptr), value :: path
             integer(c_int) :: errno
         end function c_remove
 
         subroutine c_error_text(code, text, n) bind(c, name="sphere_row_error_text")
-            import :: c_int, c_char, c_size_t
+            import :: c_int, c_ptr, c_size_t
             integer(c_int), value :: code
-            character(kind=c_char), intent(out) :: text(*)
+            type(c_ptr), value :: text
             integer(c_size_t), value :: n
         end subroutine c_error_text
     end interface
@@ -95,8 +100,10 @@ contains
     integer function path_kind(path, errno)
         character(len=*), intent(in) :: path
         integer, intent(out) :: errno
+        character(kind=c_char, len=:), allocatable, target :: z
         integer(c_int) :: kind
-        kind = c_path_kind(path//c_null_char)
+        z = path//c_null_char
+        kind = c_path_kind(c_loc(z))
         errno = 0
         select case (kind)
         case (1)
@@ -111,15 +118,15 @@ contains
         end select
     end function path_kind
 
-    !> Read what file descriptor `fd` (0: standard input) has, up to the
-    !> length of `text`: `count` bytes (0 at the end of the input), or
-    !> `errno` not 0 if the read failed.
+    !> Read what file descriptor `fd` (0: standard input) has, up to
+    !> read_block bytes: `count` bytes (0 at the end of the input) at the
+    !> start of `text`, or `errno` not 0 if the read failed.
     subroutine read_some(fd, text, count, errno)
         integer, intent(in) :: fd
-        character(len=*), intent(out) :: text
+        character(kind=c_char, len=read_block), intent(out), target :: text
         integer, intent(out) :: count, errno
         integer(c_long) :: got
-        got = c_read_some(int(fd, c_int), text, int(len(text), c_size_t))
+        got = c_read_some(int(fd, c_int), c_loc(text), int(read_block, c_size_t))
         count = int(max(0_c_long, got))
         errno = int(max(0_c_long, -got))
     end subroutine read_some
@@ -127,23 +134,28 @@ contains
     !> Rename `from` to `to` (replacing it); 0 or the errno of the failure.
     integer function rename_file(from, to)
         character(len=*), intent(in) :: from, to
-        rename_file = int(c_rename(from//c_null_char, to//c_null_char))
+        character(kind=c_char, len=:), allocatable, target :: z_from, z_to
+        z_from = from//c_null_char
+        z_to = to//c_null_char
+        rename_file = int(c_rename(c_loc(z_from), c_loc(z_to)))
     end function rename_file
 
     !> Remove the file `path`; 0 or the errno of the failure.
     integer function remove_file(path)
         character(len=*), intent(in) :: path
-        remove_file = int(c_remove(path//c_null_char))
+        character(kind=c_char, len=:), allocatable, target :: z
+        z = path//c_null_char
+        remove_file = int(c_remove(c_loc(z)))
     end function remove_file
 
     !> The system's text of an errno ("No space left on device").
     function system_error_text(errno) result(text)
         integer, intent(in) :: errno
         character(len=:), allocatable :: text
-        character(kind=c_char, len=200) :: buffer
+        character(kind=c_char, len=200), target :: buffer
         integer :: zero
         buffer = ""
-        call c_error_text(int(errno, c_int), buffer, int(len(buffer), c_size_t))
+        call c_error_text(int(errno, c_int), c_loc(buffer), int(len(buffer), c_size_t))
         zero = index(buffer, c_null_char)
         if (zero == 0) zero = len(buffer) + 1
         text = buffer(:zero - 1)
@@ -191,8 +203,10 @@ contains
     subroutine write_bytes(this, text)
         class(text_out_t), intent(inout) :: this
         character(len=*), intent(in) :: text
-        if (this%errno /= 0) return
-        this%errno = int(c_write_all(this%fd, text, int(len(text), c_size_t)))
+        character(kind=c_char, len=:), allocatable, target :: copy
+        if (this%errno /= 0 .or. len(text) == 0) return
+        copy = text
+        this%errno = int(c_write_all(this%fd, c_loc(copy), int(len(copy), c_size_t)))
     end subroutine write_bytes
 
 end module sphere_row_system

@@ -31,7 +31,7 @@ module sphere_row_tables
     end type open_table_t
 
     !> The tables open now.
-    type(open_table_t), allocatable, save :: open_tables(:)
+    type(open_table_t), allocatable :: open_tables(:)
 
     !> One row of a table, built field by field (tab-separated) where OpenMP
     !> threads build rows at once: numbers and words are written into
@@ -213,8 +213,8 @@ contains
         integer :: k, ios, errno
         if (.not. allocated(open_tables)) return
         do k = 1, size(open_tables)
-            close (open_tables(k)%unit, iostat=ios)
-            errno = remove_file(open_tables(k)%dir//"/"//open_tables(k)%name//".tmp")
+            close (open_tables(k)%unit, status="delete", iostat=ios)
+            if (ios /= 0) errno = remove_file(open_tables(k)%dir//"/"//open_tables(k)%name//".tmp")
         end do
         deallocate (open_tables)
     end subroutine discard_tables
