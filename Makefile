@@ -28,7 +28,7 @@ BUILD_STAMP := build/.release-stamp
 INC_STAMP := build/.inc-stamp
 BIN := build/release/bin
 # the engine (root package) and the study package that uses it
-SOURCES := $(wildcard include/*.h src/*.f90 src/*.inc study/src/*.f90 study/src/*.inc \
+SOURCES := $(wildcard include/*.h src/*.f90 src/*.c src/*.inc study/src/*.f90 study/src/*.inc \
            study/app/*.f90) fpm.toml study/fpm.toml
 
 # NO_XDP=1 builds without the 80-bit extended kind, as a compiler without
@@ -289,6 +289,7 @@ FUZZ_SEED ?= 1
 FUZZ_COUNT ?= 10000
 FUZZ_TIME ?= 60
 fuzz: ## throw FUZZ_COUNT seeded hostile inputs at sphere-row and check its contract
+	@mkdir -p build
 	@$(FPM) build $(TEST_FLAGS) > build/fuzz-build.log 2>&1 || { cat build/fuzz-build.log; exit 1; }
 	@bin=$$($(FPM) run $(TEST_FLAGS) --runner echo sphere-row 2>/dev/null | tail -1); \
 	python3 tools/fuzz.py --binary "$$bin" --seed $(FUZZ_SEED) --count $(FUZZ_COUNT) \

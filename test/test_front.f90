@@ -53,7 +53,8 @@ contains
             new_unittest("scene_file_linear_time", test_linear_reading), &
             new_unittest("stdin_scene", test_stdin), &
             new_unittest("output_write_checked", test_output_checked), &
-            new_unittest("time_overflow_names_v0", test_time_overflow) &
+            new_unittest("time_overflow_names_v0", test_time_overflow), &
+            new_unittest("no_trailing_blank", test_no_trailing_blank) &
             ]
     end function collect_front
 
@@ -897,6 +898,18 @@ contains
         call check(error, status == 0 .and. index(out, "collisions 13") == 1, &
             "v0=1.26e-4931, the bound given, refused: "//err)
     end subroutine test_time_overflow
+
+    !> An answer's lines end without a blank: `certified no` too (e = 0.05 is
+    !> not certified).
+    subroutine test_no_trailing_blank(error)
+        type(error_t), allocatable, intent(out) :: error
+        integer :: status
+        character(len=:), allocatable :: out, err
+        call run_program("e=0.05 precision=auto", status, out, err)
+        call check(error, status == 0 .and. index(out, new_line("a")//"certified no" &
+            //new_line("a")) > 0, "certified no: "//out//err)
+        call check(error, index(out, " "//new_line("a")) == 0, "a line ends in a blank: "//out)
+    end subroutine test_no_trailing_blank
 
     !> Run `sphere-row args` (shell redirections allowed) with stdout and
     !> stderr to files unless `stdout` is false (the caller redirects it).
