@@ -114,6 +114,12 @@ contains
         end if
         call to_dp(scene, low)
         call simulate_dp(low, run_low)
+        if (run_low%status == status_invalid) then
+            ! a run the engine refused has no results to convert
+            run%status = run_low%status
+            run%message = run_low%message
+            return
+        end if
         call from_dp(run_low, run)
     end subroutine simulate_in_dp
 
@@ -138,7 +144,9 @@ contains
         end function normal
     end function fits_dp
 
-    !> The scene rounded to real64.
+    !> The scene rounded to real64, each value kept in its range: a tol just
+    !> below 1 (allowed) that rounds to 1 (not allowed) becomes the real64
+    !> next below 1, as the front door takes a text just below an open bound.
     pure subroutine to_dp(scene, low)
         type(scene_t), intent(in) :: scene
         type(scene_dp_t), intent(out) :: low
@@ -148,7 +156,7 @@ contains
         low%v0 = real(scene%v0, dp)
         low%m = real(scene%m, dp)
         low%a = real(scene%a, dp)
-        low%tol = real(scene%tol, dp)
+        low%tol = min(real(scene%tol, dp), nearest(1.0_dp, -1.0_dp))
         low%max_collisions = scene%max_collisions
         low%closed_form_limits = scene%closed_form_limits
         low%calendar_from = scene%calendar_from

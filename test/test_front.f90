@@ -794,6 +794,8 @@ contains
         type(input_error_t), allocatable :: refused
         type(cli_t) :: cli
         type(scene_t) :: scene
+        integer :: status
+        character(len=:), allocatable :: out, err
         call cli_keys(cli)
         call cli%parse(decode("tol=0.99999999999999999999999999999999999999 " &
             //"e=0.99999999999999999999999999999999999999"), refused)
@@ -804,6 +806,12 @@ contains
         call check(error, scene%tol == nearest(1.0_qp, -1.0_qp), "tol is not the real(16) " &
             //"next below 1: "//short_text(scene%tol))
         call check(error, scene%e == 1.0_qp, "e just below 1 is not 1: "//short_text(scene%e))
+        ! in real(8) too, where that tol rounds to 1 once more (it crashed the
+        ! run in real(8), found by the fuzz)
+        call run_program("tol=0.99999999999999999999999999999999999999 precision=dp", status, &
+            out, err)
+        call check(error, status == 0 .and. index(out, "precision dp") > 0, &
+            "tol just below 1, precision=dp: status "//itoa(status)//": "//err)
     end subroutine test_range_digits
 
     !> A scene file of 400,000 line ends and a list of 40,000 masses is read
