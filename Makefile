@@ -12,6 +12,8 @@
 #   make lint            the Fortran linter fortitude, rules in fortitude.toml
 #   make test-mpi        c12-ecrit and c12-c2 on 1, 2 and 4 MPI ranks give the
 #                        same bytes as the serial build (installs OpenMPI if missing)
+#   make fuzz            seeded random and mutated inputs at sphere-row, its contract
+#                        checked on each (FUZZ_SEED, FUZZ_COUNT, FUZZ_TIME)
 #   make help            this list
 #
 #   make study MPI=1 NP=4   the same study, c12-ecrit and c12-c2 run on 4 MPI ranks
@@ -30,7 +32,7 @@ BUILD_STAMP := build/.release-stamp
 INC_STAMP := build/.inc-stamp
 BIN := build/release/bin
 # the engine (root package) and the study package that uses it
-SOURCES := $(wildcard include/*.h src/*.f90 src/*.inc study/src/*.f90 study/src/*.inc \
+SOURCES := $(wildcard include/*.h src/*.f90 src/*.c src/*.inc study/src/*.f90 study/src/*.inc \
            study/app/*.f90) fpm.toml study/fpm.toml
 
 # NO_XDP=1 builds without the 80-bit extended kind, as a compiler without
@@ -97,7 +99,7 @@ SVG := $(FIGURES:%=$(RESULTS)/%.svg) $(RESULTS)/methods_work_precision.svg \
        $(RESULTS)/methods_stability.svg
 
 .PHONY: all help prereqs test test-long test-times mutants test-mpi check-layers study tables \
-        figures bench callgrind check-results docs lint clean
+        figures bench callgrind check-results docs lint clean fuzz
 
 all: study
 
@@ -300,6 +302,22 @@ test-mpi: prereqs $(BUILD_STAMP) $(MPI_STAMP) ## c12-ecrit and c12-c2 on 1, 2, 4
 	if [ $$failed -gt 0 ]; then echo "test-mpi: $$failed runs or comparisons failed"; exit 1; fi; \
 	echo "test-mpi: c12-ecrit and c12-c2 on 1, 2 and 4 ranks and 1 and 2 threads wrote the same tables;" \
 		"a refused key is told once"
+
+# The fuzz: FUZZ_COUNT inputs made from FUZZ_SEED (key=value pairs at the edges of
+# every range, mutated command lines, scene files with junk, paths that are not
+# files) run against the sphere-row that `make test` tests (its run-time checks
+# turn an overrun into a crash the fuzz sees); it fails on a signal, a hang, a
+# malformed answer, a refusal that is not one line with exit 2, or a pass longer
+# than FUZZ_TIME seconds.
+FUZZ_SEED ?= 1
+FUZZ_COUNT ?= 10000
+FUZZ_TIME ?= 60
+fuzz: ## throw FUZZ_COUNT seeded hostile inputs at sphere-row and check its contract
+	@mkdir -p build
+	@$(FPM) build $(TEST_FLAGS) > build/fuzz-build.log 2>&1 || { cat build/fuzz-build.log; exit 1; }
+	@bin=$$($(FPM) run $(TEST_FLAGS) --runner echo sphere-row 2>/dev/null | tail -1); \
+	python3 tools/fuzz.py --binary "$$bin" --seed $(FUZZ_SEED) --count $(FUZZ_COUNT) \
+		--time-limit $(FUZZ_TIME)
 
 docs: ## API documentation from the !> comments (FORD) in build/docs/index.html
 	@bash .ci/prereqs docs

@@ -1,12 +1,14 @@
 !> sphere-row: run one scene of a row of spheres and print the complete answer.
 program sphere_row_main
-    use, intrinsic :: iso_fortran_env, only: output_unit
-    use sphere_row, only: qp, scene_t, run_t, event_log_t, simulate, str, status_word, &
-        status_invalid, event_collision, event_collapse, itoa, auto_t, simulate_auto, &
-        simulate_in_dp
+    use sphere_row, only: qp, dp, scene_t, run_t, event_log_t, simulate, str, status_word, &
+        status_invalid, status_normal, event_collision, event_collapse, itoa, auto_t, &
+        simulate_auto, simulate_in_dp
     use sphere_row_cli, only: cli_t, read_command_line, fail
-    use sphere_row_scene_keys, only: add_scene_keys, scene_from_cli
+    use sphere_row_scene_keys, only: add_scene_keys, scene_from_cli, check_scene_in_dp
     use sphere_row_error, only: error_t, fatal_error
+    use sphere_row_format, only: short_text
+    use sphere_row_read, only: printable
+    use sphere_row_system, only: text_out_t
     implicit none
     type(cli_t) :: cli
     type(scene_t) :: scene
@@ -14,6 +16,7 @@ program sphere_row_main
     type(event_log_t) :: log
     type(error_t), allocatable :: error
     type(auto_t) :: auto
+    type(text_out_t) :: out
     logical :: events
     character(len=:), allocatable :: precision
 
@@ -24,26 +27,17 @@ program sphere_row_main
     events = cli%get_flag("events")
     call choose_precision(error)
     if (allocated(error)) call fail(cli%name, error)
-    select case (precision)
-    case ("auto")
-        call simulate_auto(scene, run, auto)
-    case ("dp")
-        call simulate_in_dp(scene, run)
-    case default
-        if (events) then
-            call simulate(scene, run, log)
-        else
-            call simulate(scene, run)
-        end if
-    end select
+    call run_scene(scene, run)
     call check_run(error)
     if (allocated(error)) call fail(cli%name, error)
     call write_run()
     if (events) call write_events()
+    call out%finish(error)
+    if (allocated(error)) call fail(cli%name, error)
 
 contains
 
-    !> The keys of sphere-row: the scene keys and `events`.
+    !> The keys of sphere-row: the scene keys, `events` and `precision`.
     subroutine define_keys()
         character(len=*), parameter :: nl = new_line("a")
         cli%name = "sphere-row"
@@ -52,114 +46,146 @@ contains
             "Runs one row of spheres struck by sphere 1 (ARGESIM Comparison 12) in"//nl// &
             "real(16) and prints the number of collisions, the end time, the status"//nl// &
             "(normal, quasi_plastic, max_collisions), the final velocities v1..vp,"//nl// &
-            "positions x1..xp and gaps y1..y(p-1)."
+            "positions x1..xp and gaps y1..y(p-1). FILE - reads the scene from stdin."
         call add_scene_keys(cli)
         call cli%add_flag("events", "no", "yes adds the event table (TSV with a header row)")
-        call cli%add_word("precision", "qp", "qp: real(16); dp: real(8); auto: real(8) where" &
-            //" a rounding certificate holds, else real(16)")
+        call cli%add_choice("precision", "qp", [character(len=4) :: "qp", "dp", "auto"], &
+            "qp: real(16); dp: real(8), for a scene within real(8)'s normal range; auto:" &
+            //" real(8) where a rounding certificate holds, else real(16)")
     end subroutine define_keys
 
-    !> The precision asked for: qp, dp or auto; the event table only with qp.
+    !> The precision asked for (qp, dp or auto; the registry checked the
+    !> word); the event table only with qp; with dp, a scene real(8) carries.
     subroutine choose_precision(error)
         type(error_t), allocatable, intent(out) :: error
         precision = cli%get_word("precision")
-        select case (precision)
-        case ("qp", "dp", "auto")
-        case default
-            call fatal_error(error, "precision = "//precision//": allowed qp, dp or auto")
+        if (events .and. precision /= "qp") then
+            call fatal_error(error, "events = yes with precision = "//precision &
+                //": allowed only with precision = qp")
             return
-        end select
-        if (events .and. precision /= "qp") call fatal_error(error, "events = yes with " &
-            //"precision = "//precision//": allowed only with precision = qp")
+        end if
+        if (precision == "dp") call check_scene_in_dp(cli, scene, error)
     end subroutine choose_precision
+
+    !> Run `sc` in the precision asked for.
+    subroutine run_scene(sc, r)
+        type(scene_t), intent(in) :: sc
+        type(run_t), intent(inout) :: r
+        select case (precision)
+        case ("auto")
+            call simulate_auto(sc, r, auto)
+        case ("dp")
+            call simulate_in_dp(sc, r)
+        case default
+            if (events) then
+                call simulate(sc, r, log)
+            else
+                call simulate(sc, r)
+            end if
+        end select
+    end subroutine run_scene
 
     !> Refuse a run the engine did not accept, or one whose output would hold
     !> a number that is not finite (the scene checks are meant to make that
     !> impossible; this keeps inf and nan out of the output whatever happens).
+    !> A run whose times overflow is refused naming v0: times scale as 1/v0,
+    !> so the same scene run with v0 = 1 gives the smallest v0 allowed.
     subroutine check_run(error)
         type(error_t), allocatable, intent(out) :: error
         integer :: j
-        if (run%status == status_invalid) then
-            call fatal_error(error, trim(run%message))
+        character(len=:), allocatable :: kind_name, length_key
+        kind_name = "real(16)"
+        if (precision == "dp") kind_name = "real(8)"
+        length_key = "d"
+        if (maxval(scene%a) > scene%d) length_key = merge("gaps", "a   ", cli%given("gaps"))
+        if (run%status == status_invalid .or. .not. finite([run%t_end, run%collapse_t])) then
+            call refuse_time(kind_name, error)
+            if (.not. allocated(error) .and. run%status == status_invalid) then
+                call fatal_error(error, trim(run%message))
+            end if
             return
         end if
-        if (.not. finite([run%t_end, run%collapse_t, run%v, run%x, run%y])) then
-            call fatal_error(error, "scene = "//scene_text()//": the run's times, positions " &
-                //"or velocities overflow real(16); allowed a scene of smaller scales")
+        if (.not. finite(run%v)) then
+            call fatal_error(error, "v0 = "//printable(cli%get_text("v0"))//": the run's " &
+                //"velocities overflow "//kind_name//"; allowed a smaller v0")
+            return
+        end if
+        if (.not. finite([run%x, run%y])) then
+            call fatal_error(error, trim(length_key)//" = "//printable(cli%get_text( &
+                trim(length_key)))//": the run's positions overflow "//kind_name &
+                //"; allowed a shorter row")
             return
         end if
         if (.not. events) return
         do j = 0, log%n
             if (finite([log%t(j), log%w(j), log%x1(j), log%dx1(j), log%y(:, j), &
                 log%dy(:, j)])) cycle
-            call fatal_error(error, "scene = "//scene_text()//": event "//itoa(j) &
-                //" overflows real(16); allowed a scene of smaller scales")
+            call fatal_error(error, "events = yes: event "//itoa(j)//" of this scene " &
+                //"overflows "//kind_name//"; allowed events = no")
             return
         end do
     end subroutine check_run
+
+    !> A run whose times overflow, refused naming v0 with the smallest v0
+    !> whose run stays finite; no error if the same scene at v0 = 1 fails too.
+    subroutine refuse_time(kind_name, error)
+        character(len=*), intent(in) :: kind_name
+        type(error_t), allocatable, intent(out) :: error
+        type(scene_t) :: unit_speed
+        type(run_t) :: check
+        real(qp) :: t1, big
+        unit_speed = scene
+        unit_speed%v0 = 1.0_qp
+        call run_scene(unit_speed, check)
+        if (check%status == status_invalid) return
+        t1 = max(check%t_end, check%collapse_t)
+        if (.not. finite([t1])) return
+        big = huge(1.0_qp)
+        if (precision == "dp") big = real(huge(1.0_dp), qp)
+        call fatal_error(error, "v0 = "//printable(cli%get_text("v0"))//": the run's " &
+            //"times (t_end = "//short_text(t1, 3)//"/v0) overflow "//kind_name &
+            //"; allowed v0 >= "//short_text(t1/big, 3, "up"))
+    end subroutine refuse_time
 
     pure logical function finite(xs)
         real(qp), intent(in) :: xs(:)
         finite = all(abs(xs) <= huge(xs))
     end function finite
 
-    !> The scene's keys as given, for a message.
-    function scene_text() result(text)
-        character(len=:), allocatable :: text
-        text = "p="//cli%get_text("p")//" d="//cli%get_text("d")//" v0="//cli%get_text("v0")
-    end function scene_text
-
-    !> The answer, one quantity per line.
+    !> The answer, one quantity per line, collected by `out` (whose every
+    !> write is checked at its finish).
     subroutine write_run()
-        integer :: i
-        write (output_unit, "(a, 1x, i0)") "collisions", run%n
-        write (output_unit, "(a, 1x, a)") "t_end", str(run%t_end)
-        write (output_unit, "(a, 1x, a)") "status", status_word(run%status)
+        call out%put("collisions "//itoa(run%n))
+        call out%put("t_end "//str(run%t_end))
+        call out%put("status "//status_word(run%status))
         if (precision == "auto") then
-            write (output_unit, "(a, 1x, a)") "precision", auto%answered
-            write (output_unit, "(a, 1x, a)") "certified", merge("yes", "no ", auto%certified)
-            if (auto%certified) write (output_unit, "(a, 1x, a)") "v_bound", str(auto%v_bound)
-            if (auto%answered /= "dp") write (output_unit, "(a, 1x, a)") "not_dp", &
-                auto%why_not_dp
+            call out%put("precision "//auto%answered)
+            call out%put("certified "//trim(merge("yes", "no ", auto%certified)))
+            if (auto%certified) call out%put("v_bound "//str(auto%v_bound))
+            if (auto%answered /= "dp") call out%put("not_dp "//auto%why_not_dp)
         else
-            write (output_unit, "(a, 1x, a)") "precision", precision
+            call out%put("precision "//precision)
         end if
         if (run%collapses > 0) then
-            write (output_unit, "(a, 1x, i0)") "collapses", run%collapses
-            write (output_unit, "(a, 1x, i0)") "closed_form_limits", run%closed_limits
-            write (output_unit, "(a, 1x, i0, '-', i0)") "collapse_spheres", &
-                run%collapse_first, run%collapse_last
-            write (output_unit, "(a, 1x, a)") "collapse_t", str(run%collapse_t)
+            call out%put("collapses "//itoa(run%collapses))
+            call out%put("closed_form_limits "//itoa(run%closed_limits))
+            call out%put("collapse_spheres "//itoa(run%collapse_first)//"-" &
+                //itoa(run%collapse_last))
+            call out%put("collapse_t "//str(run%collapse_t))
         end if
         call write_numbered("v", run%v)
         call write_numbered("x", run%x)
         call write_numbered("y", run%y)
     end subroutine write_run
 
-    !> Lines `<name><i> <values(i)>`, written a block of lines at a time (one
-    !> write per line would be one system call per line in a row of 10^6).
+    !> Lines `<name><i> <values(i)>`.
     subroutine write_numbered(name, values)
         character(len=*), intent(in) :: name
         real(qp), intent(in) :: values(:)
-        integer, parameter :: block = 65536
-        character(len=block) :: buf
-        character(len=:), allocatable :: line
-        integer :: i, at
-        at = 0
+        integer :: i
         do i = 1, size(values)
-            line = name//itoa(i)//" "//str(values(i))
-            if (at > 0 .and. at + 1 + len(line) > block) then
-                write (output_unit, "(a)") buf(:at)
-                at = 0
-            end if
-            if (at > 0) then
-                buf(at + 1:at + 1) = new_line("a")
-                at = at + 1
-            end if
-            buf(at + 1:at + len(line)) = line
-            at = at + len(line)
+            call out%put(name//itoa(i)//" "//str(values(i)))
         end do
-        if (at > 0) write (output_unit, "(a)") buf(:at)
     end subroutine write_numbered
 
     !> The event record as TSV, one header row naming each column and its unit
@@ -176,7 +202,7 @@ contains
         do k = 1, scene%p - 1
             line = line//tab//"dy"//itoa(k)//"[V]"
         end do
-        write (output_unit, "(a)") line
+        call out%put(line)
         do j = 0, log%n
             select case (log%kind(j))
             case (event_collision)
@@ -195,7 +221,7 @@ contains
             do k = 1, scene%p - 1
                 line = line//tab//str(log%dy(k, j))
             end do
-            write (output_unit, "(a)") line
+            call out%put(line)
         end do
     end subroutine write_events
 

@@ -8,7 +8,7 @@
 !> rules, and the certificate is applied there too.
 module sphere_row_auto
     use sphere_row_kinds, only: dp, qp
-    use sphere_row_status, only: event_collision
+    use sphere_row_status, only: event_collision, status_invalid
     use sphere_row_engine_qp, only: scene_t, run_t, bounds_t, event_log_t, simulate_wp, &
         simulate_certified_wp
     use sphere_row_engine_dp, only: scene_dp_t => scene_t, run_dp_t => run_t, &
@@ -98,14 +98,28 @@ contains
     end function finite
 
     !> Run `scene` in real64 with the engine's full rules (no certificate);
-    !> `run` holds the answer in real128.
+    !> `run` holds the answer in real128. A scene that real64 cannot carry
+    !> (fits_dp) is not run: its status is status_invalid, and the message
+    !> says why (a front door checks each key first, to name the one at fault).
     subroutine simulate_in_dp(scene, run)
         type(scene_t), intent(in) :: scene
         type(run_t), intent(inout) :: run
         type(scene_dp_t) :: low
         type(run_dp_t) :: run_low
+        if (.not. fits_dp(scene)) then
+            run%status = status_invalid
+            run%message = "scene: its values or scales are beyond the normal range of " &
+                //"real(8); allowed a scene within it for a run in real(8)"
+            return
+        end if
         call to_dp(scene, low)
         call simulate_dp(low, run_low)
+        if (run_low%status == status_invalid) then
+            ! a run the engine refused has no results to convert
+            run%status = run_low%status
+            run%message = run_low%message
+            return
+        end if
         call from_dp(run_low, run)
     end subroutine simulate_in_dp
 
@@ -130,7 +144,9 @@ contains
         end function normal
     end function fits_dp
 
-    !> The scene rounded to real64.
+    !> The scene rounded to real64, each value kept in its range: a tol just
+    !> below 1 (allowed) that rounds to 1 (not allowed) becomes the real64
+    !> next below 1, as the front door takes a text just below an open bound.
     pure subroutine to_dp(scene, low)
         type(scene_t), intent(in) :: scene
         type(scene_dp_t), intent(out) :: low
@@ -140,9 +156,10 @@ contains
         low%v0 = real(scene%v0, dp)
         low%m = real(scene%m, dp)
         low%a = real(scene%a, dp)
-        low%tol = real(scene%tol, dp)
+        low%tol = min(real(scene%tol, dp), nearest(1.0_dp, -1.0_dp))
         low%max_collisions = scene%max_collisions
         low%closed_form_limits = scene%closed_form_limits
+        low%calendar_from = scene%calendar_from
     end subroutine to_dp
 
     !> A real64 run's results in a real128 run.

@@ -1,16 +1,18 @@
 !> The registry of keys of every program: it drives parsing, validation and
-!> `--help`, and reads scene files (one `&scene` group of whole keys). Numbers
-!> are read by `sphere_row_read`; the scene keys are in `sphere_row_scene_keys`.
+!> `--help`, and applies scene files (one `&scene` group of whole keys). One
+!> key and the checks of its value are `sphere_row_key`; numbers are read by
+!> `sphere_row_read`; scene files are read and split into items by
+!> `sphere_row_scene_file`; the scene keys are in `sphere_row_scene_keys`.
 !>
 !> A program registers its keys in a `cli_t` (name, kind of value, default,
 !> allowed range, help line), calls `read_command_line` and then asks the
 !> registry for values. Everything a user can give is checked against that one
 !> table: the key must be known and given once, its value must be written as a
-!> number of the key's kind (the whole text, nothing more) and lie in the
+!> value of the key's kind (the whole text, nothing more) and lie in the
 !> key's range, and two keys of which one overrides the other may not both be
 !> given. A refusal is an `error_t` whose message names the key, the value as
 !> given and what is allowed; `fail` prints it as one line and stops with
-!> exit status 2.
+!> exit status 2 (1 for output that could not be written).
 !>
 !> A program with the scene keys and keys of its own:
 !>
@@ -27,19 +29,21 @@
 !>     if (allocated(error)) call fail(cli%name, error)
 !>     n_grid = cli%get_int("n_grid")
 module sphere_row_cli
-    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit, iostat_end, iostat_eor
+    use, intrinsic :: iso_fortran_env, only: error_unit
     use sphere_row_kinds, only: qp
-    use sphere_row_format, only: itoa, short_text
-    use sphere_row_error, only: error_t, fatal_error, error_io
-    use sphere_row_read, only: read_real, read_int, read_reals, printable, has_control, lower
+    use sphere_row_format, only: itoa
+    use sphere_row_error, only: error_t, fatal_error, error_output
+    use sphere_row_read, only: printable
+    use sphere_row_key, only: key_t, new_key, set_range, range_text, read_value, origin, &
+        same_text, key_int, key_real, key_reals, key_flag, key_word, key_choice
+    use sphere_row_scene_file, only: scene_item_t, read_scene_text, scene_items, join_values, &
+        file_origin
+    use sphere_row_system, only: text_out_t
     implicit none
     private
     public :: cli_t, string_t, read_command_line, fail, command_args
     ! for the modules that register keys of their own kind (sphere_row_scene_keys)
     public :: find_key, key_index, origin
-
-    !> Kinds of value a key takes.
-    integer, parameter :: key_int = 1, key_real = 2, key_reals = 3, key_flag = 4, key_word = 5
 
     !> Column where the help text of a key starts in `--help`.
     integer, parameter :: help_column = 22
@@ -51,43 +55,6 @@ module sphere_row_cli
         !> The text.
         character(len=:), allocatable :: s
     end type string_t
-
-    !> One key of a program: what it takes and, after parsing, its value.
-    type :: key_t
-        !> The key as typed before `=`.
-        character(len=:), allocatable :: name
-        !> key_int, key_real, key_reals, key_flag or key_word.
-        integer :: kind = key_real
-        !> Text read as the value when the key is not given ("" : no value).
-        character(len=:), allocatable :: default
-        !> How `--help` shows the value after `name=` (usually the default).
-        character(len=:), allocatable :: shown
-        !> What is allowed, as messages and `--help` say it.
-        character(len=:), allocatable :: allowed
-        !> One line of `--help`.
-        character(len=:), allocatable :: help
-        !> A key that this one overrides: giving both is refused ("" : none).
-        character(len=:), allocatable :: overrides
-        !> True if a scene file may set the key.
-        logical :: in_file = .false.
-        !> Range of a number (of every entry of a list): lo <= x <= hi, with
-        !> strict inequalities where the side is open.
-        real(qp) :: lo = 0.0_qp, hi = 0.0_qp
-        logical :: has_lo = .false., has_hi = .false., lo_open = .false., hi_open = .false.
-        !> Range of an integer.
-        integer :: ilo = -huge(1), ihi = huge(1)
-        !> True once the user gave the key.
-        logical :: given = .false.
-        !> Where the value came from: "" (command line) or the scene file's path.
-        character(len=:), allocatable :: source
-        !> The value as text, as given (or the default).
-        character(len=:), allocatable :: text
-        !> The value, in the member of its kind.
-        integer :: n = 0
-        real(qp) :: x = 0.0_qp
-        real(qp), allocatable :: xs(:)
-        logical :: flag = .false.
-    end type key_t
 
     !> A program's command line: its keys and the text of its `--help`.
     type :: cli_t
@@ -114,6 +81,8 @@ module sphere_row_cli
         procedure :: add_flag => cli_add_flag
         !> Register a key taking a word (a name, a path).
         procedure :: add_word => cli_add_word
+        !> Register a key taking one word of a fixed set.
+        procedure :: add_choice => cli_add_choice
         !> Read arguments into the keys' values.
         procedure :: parse => cli_parse
         !> The text of `--help`.
@@ -128,7 +97,7 @@ module sphere_row_cli
         procedure :: get_reals => cli_get_reals
         !> The value of a flag key.
         procedure :: get_flag => cli_get_flag
-        !> The value of a word key.
+        !> The value of a word or choice key.
         procedure :: get_word => cli_get_word
         !> The value of a key as given (or its default), for messages.
         procedure :: get_text => cli_get_text
@@ -215,61 +184,33 @@ contains
     end subroutine cli_add_flag
 
     !> Register a key taking a word: any non-empty text of printable characters
-    !> (a name, a directory).
+    !> without a blank at either end (a name, a directory).
     pure subroutine cli_add_word(this, name, default, help)
         class(cli_t), intent(inout) :: this
         character(len=*), intent(in) :: name, default, help
         type(key_t) :: key
         call new_key(key, name, key_word, default, help)
-        key%allowed = "a non-empty text of printable characters"
+        key%allowed = "a non-empty text of printable characters, no blank at either end"
         call append_key(this, key)
     end subroutine cli_add_word
 
-    pure subroutine new_key(key, name, kind, default, help, in_file)
-        type(key_t), intent(out) :: key
-        character(len=*), intent(in) :: name, default, help
-        integer, intent(in) :: kind
-        logical, intent(in), optional :: in_file
-        key%name = name
-        key%kind = kind
-        key%default = default
-        key%shown = default
-        key%help = help
-        key%overrides = ""
-        key%source = ""
-        key%text = ""
-        if (present(in_file)) key%in_file = in_file
-    end subroutine new_key
-
-    pure subroutine set_range(key, lo, hi, lo_open, hi_open)
-        type(key_t), intent(inout) :: key
-        real(qp), intent(in), optional :: lo, hi
-        logical, intent(in), optional :: lo_open, hi_open
-        key%has_lo = present(lo)
-        key%has_hi = present(hi)
-        if (present(lo)) key%lo = lo
-        if (present(hi)) key%hi = hi
-        if (present(lo_open)) key%lo_open = lo_open
-        if (present(hi_open)) key%hi_open = hi_open
-    end subroutine set_range
-
-    !> "lo <= name <= hi" and its one-sided forms, from a key's range.
-    pure function range_text(key, name) result(text)
-        type(key_t), intent(in) :: key
-        character(len=*), intent(in) :: name
-        character(len=:), allocatable :: text
-        character(len=*), parameter :: le(2) = ["<=", "< "], ge(2) = [">=", "> "]
-        if (key%has_lo .and. key%has_hi) then
-            text = short_text(key%lo)//" "//trim(le(merge(2, 1, key%lo_open)))//" "//name &
-                //" "//trim(le(merge(2, 1, key%hi_open)))//" "//short_text(key%hi)
-        else if (key%has_lo) then
-            text = name//" "//trim(ge(merge(2, 1, key%lo_open)))//" "//short_text(key%lo)
-        else if (key%has_hi) then
-            text = name//" "//trim(le(merge(2, 1, key%hi_open)))//" "//short_text(key%hi)
-        else
-            text = "a finite number"
-        end if
-    end function range_text
+    !> Register a key taking one of the words `choices` (exactly as written).
+    pure subroutine cli_add_choice(this, name, default, choices, help)
+        class(cli_t), intent(inout) :: this
+        character(len=*), intent(in) :: name, default, choices(:), help
+        type(key_t) :: key
+        integer :: i
+        call new_key(key, name, key_choice, default, help)
+        key%choices = ","
+        key%allowed = ""
+        do i = 1, size(choices)
+            key%choices = key%choices//trim(choices(i))//","
+            if (i > 1) key%allowed = key%allowed//trim(merge(" or", ",  ", i == size(choices))) &
+                //" "
+            key%allowed = key%allowed//trim(choices(i))
+        end do
+        call append_key(this, key)
+    end subroutine cli_add_choice
 
     pure subroutine append_key(cli, key)
         type(cli_t), intent(inout) :: cli
@@ -352,18 +293,20 @@ contains
         if (allocated(key%xs)) deallocate (key%xs)
     end subroutine reset_value
 
-    !> A bare argument: a scene file if the program takes one, else refused.
+    !> A bare argument: a scene file if the program takes one (`-`: standard
+    !> input), else refused.
     subroutine bare_argument(cli, arg, file, error)
         type(cli_t), intent(inout) :: cli
         character(len=*), intent(in) :: arg
         character(len=:), allocatable, intent(inout) :: file
         type(error_t), allocatable, intent(out) :: error
-        if (starts_with_dash(arg) .or. len(arg) == 0 .or. .not. cli%files) then
+        if ((starts_with_dash(arg) .and. .not. same_text(arg, "-")) .or. len(arg) == 0 &
+            .or. .not. cli%files) then
             call fatal_error(error, "argument '"//printable(arg)//"': allowed " &
                 //allowed_arguments(cli))
         else if (len(file) > 0) then
-            call fatal_error(error, "file = "//printable(arg)//": a second scene file (the " &
-                //"first is "//printable(file)//"); allowed one scene file")
+            call fatal_error(error, file_origin(arg)//"a second scene file (the first is '" &
+                //printable(file)//"'); allowed one scene file")
         else
             file = arg
             call read_scene_file(cli, arg, error)
@@ -423,98 +366,6 @@ contains
         end do
     end subroutine check_overrides
 
-    !> "file 'path': " for a value from a scene file, "" for the command line.
-    pure function origin(key) result(text)
-        type(key_t), intent(in) :: key
-        character(len=:), allocatable :: text
-        text = ""
-        if (len(key%source) > 0) text = "file '"//printable(key%source)//"': "
-    end function origin
-
-    !> Read key%text as the key's value and check its range; `where` prefixes
-    !> the message (the scene file a value came from).
-    subroutine read_value(key, where, error)
-        type(key_t), intent(inout) :: key
-        character(len=*), intent(in) :: where
-        type(error_t), allocatable, intent(out) :: error
-        integer :: i
-        select case (key%kind)
-        case (key_int)
-            call read_int(key%name, key%text, key%n, error, key%allowed)
-            if (allocated(error)) then
-                error%message = where//error%message
-                return
-            end if
-            if (key%n < key%ilo .or. key%n > key%ihi) then
-                call fatal_error(error, where//key%name//" = "//printable(key%text) &
-                    //": allowed "//key%allowed)
-                return
-            end if
-        case (key_real)
-            call read_real(key%name, key%text, key%x, error, key%allowed)
-            if (allocated(error)) then
-                error%message = where//error%message
-                return
-            end if
-            if (.not. in_range(key, key%x)) then
-                call fatal_error(error, where//key%name//" = "//printable(key%text) &
-                    //": allowed "//key%allowed)
-                return
-            end if
-        case (key_reals)
-            call read_reals(key%name, key%text, key%xs, error, key%allowed)
-            if (allocated(error)) then
-                error%message = where//error%message
-                return
-            end if
-            do i = 1, size(key%xs)
-                if (in_range(key, key%xs(i))) cycle
-                call fatal_error(error, where//key%name//" = "//printable(key%text) &
-                    //": value "//itoa(i)//" is "//short_text(key%xs(i))//"; allowed " &
-                    //key%allowed)
-                return
-            end do
-        case (key_flag)
-            select case (key%text)
-            case ("yes")
-                key%flag = .true.
-            case ("no")
-                key%flag = .false.
-            case default
-                call fatal_error(error, where//key%name//" = "//printable(key%text) &
-                    //": allowed yes or no")
-                return
-            end select
-        case default
-            ! a word: any non-empty printable text
-            if (len(key%text) == 0 .or. has_control(key%text)) then
-                call fatal_error(error, where//key%name//" = "//printable(key%text) &
-                    //": allowed "//key%allowed)
-                return
-            end if
-        end select
-    end subroutine read_value
-
-    pure logical function in_range(key, x)
-        type(key_t), intent(in) :: key
-        real(qp), intent(in) :: x
-        in_range = .true.
-        if (key%has_lo) then
-            if (key%lo_open) then
-                in_range = x > key%lo
-            else
-                in_range = x >= key%lo
-            end if
-        end if
-        if (key%has_hi .and. in_range) then
-            if (key%hi_open) then
-                in_range = x < key%hi
-            else
-                in_range = x <= key%hi
-            end if
-        end if
-    end function in_range
-
     !> What a command line may hold, for messages about a stray argument.
     function allowed_arguments(cli) result(text)
         type(cli_t), intent(in) :: cli
@@ -554,155 +405,74 @@ contains
     ! the program kit: scene files
     ! ------------------------------------------------------------------
 
-    !> Read a scene file: one namelist group `&scene ... /` holding whole keys
-    !> (`name = value`, lists as `name = v1, v2, ...`), `!` comments. Every
-    !> value passes the same checks as on the command line; what Fortran's
-    !> namelist input would also take (elements `masses(2) = 1`, repeat
-    !> counts `3*1`, null values `1,,2`, list-directed numbers like `1-5`) is
-    !> refused. A key given on the command line too keeps that value.
+    !> Apply a scene file: one namelist group `&scene ... /` holding whole
+    !> keys (`name = value`, lists as `name = v1, v2, ...`), `!` comments.
+    !> Every value passes the same checks as on the command line; what
+    !> Fortran's namelist input would also take (elements `masses(2) = 1`,
+    !> repeat counts `3*1`, null values `1,,2`, list-directed numbers like
+    !> `1-5`) is refused. A key given on the command line too keeps that value.
     subroutine read_scene_file(cli, path, error)
         type(cli_t), intent(inout) :: cli
         character(len=*), intent(in) :: path
         type(error_t), allocatable, intent(out) :: error
-        character(len=:), allocatable :: text, body, where
-        integer :: first, last, finish
-        where = "file '"//printable(path)//"': "
-        call read_text(path, text, error)
+        character(len=:), allocatable :: text
+        type(scene_item_t), allocatable :: items(:)
+        logical, allocatable :: seen(:)
+        integer :: i
+        call read_scene_text(path, text, error)
         if (allocated(error)) return
-        first = verify(text, " ")
-        if (first == 0) then
-            call fatal_error(error, where//"empty (or not a file); allowed a namelist group " &
-                //"&scene ... /")
-            return
-        end if
-        last = scan(text(first:), " ") + first - 1
-        if (last < first) last = len(text) + 1
-        if (lower(text(first:last - 1)) /= "&scene") then
-            call fatal_error(error, where//"begins with '"//printable(text(first:last - 1)) &
-                //"'; allowed a namelist group &scene ... /")
-            return
-        end if
-        finish = index(text(last:), "/")
-        if (finish == 0) then
-            call fatal_error(error, where//"no '/' ends the group &scene; allowed " &
-                //"&scene key = value, ... /")
-            return
-        end if
-        finish = finish + last - 1
-        if (verify(text(finish + 1:), " ") /= 0) then
-            call fatal_error(error, where//"text after the '/' that ends &scene: '" &
-                //printable(trim(adjustl(text(finish + 1:))))//"'; allowed only comments")
-            return
-        end if
-        body = text(last:finish - 1)
-        call read_group(cli, path, where, body, error)
+        call scene_items(path, text, items, error)
+        if (allocated(error)) return
+        allocate (seen(size(cli%keys)), source=.false.)
+        do i = 1, size(items)
+            call file_item(cli, path, items(i), seen, error)
+            if (allocated(error)) return
+        end do
     end subroutine read_scene_file
 
-    !> The items `name = values` of a group's body.
-    subroutine read_group(cli, path, where, body, error)
+    !> One item of a scene file: a whole key, known, settable in a file and
+    !> set once, with as many values as it takes.
+    subroutine file_item(cli, path, item, seen, error)
         type(cli_t), intent(inout) :: cli
-        character(len=*), intent(in) :: path, where, body
-        type(error_t), allocatable, intent(out) :: error
-        integer :: eq, next_eq, name_start, next_name, value_end, pos
-        character(len=:), allocatable :: name
-        logical, allocatable :: seen(:)
-        allocate (seen(size(cli%keys)), source=.false.)
-        eq = index(body, "=")
-        if (eq == 0) then
-            if (verify(body, " ,") /= 0) call fatal_error(error, where//"'" &
-                //printable(trim(adjustl(body)))//"' in &scene; allowed key = value items")
-            return
-        end if
-        call name_before(body, eq, name_start)
-        if (verify(body(:name_start - 1), " ") /= 0) then
-            call fatal_error(error, where//"'"//printable(trim(adjustl(body(:name_start - 1)))) &
-                //"' before the first key; allowed key = value items")
-            return
-        end if
-        pos = eq
-        do
-            name = lower(trim(adjustl(body(name_start:pos - 1))))
-            next_eq = index(body(pos + 1:), "=")
-            if (next_eq == 0) then
-                value_end = len(body)
-                next_name = 0
-            else
-                next_eq = next_eq + pos
-                call name_before(body, next_eq, next_name)
-                value_end = next_name - 1
-            end if
-            call file_item(cli, path, where, name, body(pos + 1:value_end), seen, error)
-            if (allocated(error)) return
-            if (next_eq == 0) exit
-            name_start = next_name
-            pos = next_eq
-        end do
-    end subroutine read_group
-
-    !> Start of the name that ends just before the `=` at position eq.
-    pure subroutine name_before(body, eq, start)
-        character(len=*), intent(in) :: body
-        integer, intent(in) :: eq
-        integer, intent(out) :: start
-        integer :: i
-        i = eq - 1
-        do while (i >= 1)
-            if (body(i:i) /= " ") exit
-            i = i - 1
-        end do
-        do while (i >= 1)
-            if (body(i:i) == " " .or. body(i:i) == ",") exit
-            i = i - 1
-        end do
-        start = i + 1
-    end subroutine name_before
-
-    !> One item of a scene file: the key `name`, its values as written.
-    subroutine file_item(cli, path, where, name, values, seen, error)
-        type(cli_t), intent(inout) :: cli
-        character(len=*), intent(in) :: path, where, name, values
+        character(len=*), intent(in) :: path
+        type(scene_item_t), intent(in) :: item
         logical, intent(inout) :: seen(:)
         type(error_t), allocatable, intent(out) :: error
-        character(len=:), allocatable :: text, shown
+        character(len=:), allocatable :: text, where
         type(key_t) :: scratch
         integer :: k, count
         logical :: null
-        shown = printable(trim(adjustl(values)))
-        if (len(name) == 0) then
-            call fatal_error(error, where//"'= "//shown//"' without a key; allowed " &
-                //"key = value items")
+        where = file_origin(path)
+        if (len(item%name) == 0) then
+            call refuse("'= "//printable(item%values)//"' without a key; allowed key = value " &
+                //"items", .false.)
             return
         end if
-        if (verify(name, "abcdefghijklmnopqrstuvwxyz0123456789_") /= 0) then
-            call fatal_error(error, where//printable(name)//" = "//shown//": not a key name " &
-                //"(single elements and components cannot be set); allowed whole keys: " &
-                //file_keys(cli))
+        if (verify(item%name, "abcdefghijklmnopqrstuvwxyz0123456789_") /= 0) then
+            call refuse("not a key name (single elements and components cannot be set); " &
+                //"allowed whole keys: "//file_keys(cli))
             return
         end if
-        k = find_key(cli, name)
+        k = find_key(cli, item%name)
         if (k > 0) then
             if (.not. cli%keys(k)%in_file) k = 0
         end if
         if (k == 0) then
-            call fatal_error(error, where//name//" = "//shown//": unknown key; allowed in a " &
-                //"file: "//file_keys(cli))
+            call refuse("unknown key; allowed in a file: "//file_keys(cli))
             return
         end if
         if (seen(k)) then
-            call fatal_error(error, where//name//" = "//shown//": "//name//" is given twice " &
-                //"in the file; allowed each key once")
+            call refuse(item%name//" is given twice in the file; allowed each key once")
             return
         end if
         seen(k) = .true.
-        call join_values(values, text, count, null)
+        call join_values(item%values, text, count, null)
         if (null .or. count == 0) then
-            call fatal_error(error, where//name//" = "//shown//": an empty value; allowed " &
-                //cli%keys(k)%allowed)
+            call refuse("an empty value; allowed "//cli%keys(k)%allowed)
             return
         end if
         if (count > 1 .and. cli%keys(k)%kind /= key_reals) then
-            call fatal_error(error, where//name//" = "//shown//": "//itoa(count) &
-                //" values; allowed one value, "//cli%keys(k)%allowed)
+            call refuse(itoa(count)//" values; allowed one value, "//cli%keys(k)%allowed)
             return
         end if
         if (cli%keys(k)%given) then
@@ -718,43 +488,23 @@ contains
             key%text = text
             call read_value(key, where, error)
         end associate
-    end subroutine file_item
-
-    !> The values of an item, separated by commas or blanks, joined by commas;
-    !> `null` if two commas have no value between them (one trailing comma
-    !> separates items and is allowed).
-    pure subroutine join_values(values, text, count, null)
-        character(len=*), intent(in) :: values
-        character(len=:), allocatable, intent(out) :: text
-        integer, intent(out) :: count
-        logical, intent(out) :: null
-        integer :: i, start
-        logical :: after_comma
-        text = ""
-        count = 0
-        null = .false.
-        after_comma = .true.
-        i = 1
-        do while (i <= len(values))
-            if (values(i:i) == ",") then
-                if (after_comma) null = .true.
-                after_comma = .true.
-                i = i + 1
-            else if (values(i:i) == " ") then
-                i = i + 1
+    contains
+        !> "file 'path': name = values: reason" (without the name and
+        !> values if `named` is false).
+        subroutine refuse(reason, named)
+            character(len=*), intent(in) :: reason
+            logical, intent(in), optional :: named
+            logical :: with_name
+            with_name = .true.
+            if (present(named)) with_name = named
+            if (with_name) then
+                call fatal_error(error, where//printable(item%name)//" = " &
+                    //printable(item%values)//": "//reason)
             else
-                start = i
-                do while (i <= len(values))
-                    if (values(i:i) == "," .or. values(i:i) == " ") exit
-                    i = i + 1
-                end do
-                if (count > 0) text = text//","
-                text = text//values(start:i - 1)
-                count = count + 1
-                after_comma = .false.
+                call fatal_error(error, where//reason)
             end if
-        end do
-    end subroutine join_values
+        end subroutine refuse
+    end subroutine file_item
 
     !> Names of the keys a scene file may set.
     pure function file_keys(cli) result(text)
@@ -768,52 +518,6 @@ contains
             text = text//cli%keys(k)%name
         end do
     end function file_keys
-
-    !> The whole file as one line: line ends, tabs and carriage returns become
-    !> blanks, `!` comments are dropped.
-    subroutine read_text(path, text, error)
-        character(len=*), intent(in) :: path
-        character(len=:), allocatable, intent(out) :: text
-        type(error_t), allocatable, intent(out) :: error
-        character(len=1024) :: buffer
-        character(len=512) :: iomsg
-        character(len=:), allocatable :: line
-        integer :: unit, ios, n, bang, i
-        text = ""
-        open (newunit=unit, file=path, status="old", action="read", form="formatted", &
-            access="sequential", iostat=ios, iomsg=iomsg)
-        if (ios /= 0) then
-            call fatal_error(error, "file = "//printable(path)//": cannot be opened (" &
-                //trim(iomsg)//"); allowed a readable scene file", error_io)
-            return
-        end if
-        line = ""
-        do
-            read (unit, "(a)", advance="no", iostat=ios, iomsg=iomsg, size=n) buffer
-            if (ios == 0) then
-                line = line//buffer(:n)
-                cycle
-            end if
-            if (ios == iostat_eor .or. (ios == iostat_end .and. len(line) + n > 0)) then
-                line = line//buffer(:n)
-                bang = index(line, "!")
-                if (bang > 0) line = line(:bang - 1)
-                text = text//line//" "
-                line = ""
-                if (ios == iostat_eor) cycle
-                exit
-            end if
-            if (ios == iostat_end) exit
-            call fatal_error(error, "file = "//printable(path)//": cannot be read (" &
-                //trim(iomsg)//"); allowed a readable text file", error_io)
-            close (unit)
-            return
-        end do
-        close (unit)
-        do i = 1, len(text)
-            if (text(i:i) == achar(9) .or. text(i:i) == achar(13)) text(i:i) = " "
-        end do
-    end subroutine read_text
 
     ! ------------------------------------------------------------------
     ! the program kit: values, help, failure
@@ -921,7 +625,8 @@ contains
             end associate
         end do
         if (cli%files) text = text//"  FILE"//repeat(" ", help_column - 7) &
-            //"a scene file: a namelist group &scene key = value, ... /"//nl &
+            //"a scene file (- : standard input): a namelist group &scene key = value, ... /" &
+            //nl &
             //repeat(" ", help_column - 1)//"of the keys "//file_keys(cli)//";"//nl &
             //repeat(" ", help_column - 1)//"keys on the command line override the file's"//nl
     end function key_lines
@@ -931,10 +636,13 @@ contains
         character(len=:), allocatable :: text
         text = "Input: each key at most once, as key=value with nothing around the value;" &
             //nl//"numbers in full: an optional sign, digits with an optional '.', an optional" &
-            //nl//"exponent e, E, d or D with optional sign and digits (0.25, -3, 1e-5, 2.5d3);" &
+            //nl//"exponent e, E, d or D with optional sign and digits (0.25, -3, 1e-5, 2.5d3)," &
+            //nl//"0 or of magnitude between the smallest and the largest normal real(16)" &
+            //nl//"(3.37e-4932 and 1.18e4932); a range is decided on the number as written;" &
             //nl//"integers: an optional sign and digits; lists: comma-separated numbers." &
             //nl//"Bad input: one line on stderr ("//cli%name//": key = value: allowed ...)," &
-            //nl//"exit status 2, nothing on stdout."
+            //nl//"exit status 2, nothing on stdout; output that cannot be written: one line" &
+            //nl//"on stderr, exit status 1."
     end function input_rules
 
     !> All command-line arguments, each with its own length.
@@ -950,15 +658,19 @@ contains
     end subroutine command_args
 
     !> For programs: read the command line into `cli`; on `--help` print the
-    !> usage on stdout and stop; on bad input `fail`.
+    !> usage on stdout and stop; on bad input, or help that cannot be
+    !> written, `fail`.
     subroutine read_command_line(cli)
         type(cli_t), intent(inout) :: cli
         type(string_t), allocatable :: args(:)
         type(error_t), allocatable :: error
+        type(text_out_t) :: out
         call command_args(args)
         call cli%parse(args, error)
         if (cli%help) then
-            write (output_unit, "(a)", advance="no") cli%usage()
+            call out%put_text(cli%usage()//new_line("a"))
+            call out%finish(error)
+            if (allocated(error)) call fail(cli%name, error)
             stop
         end if
         if (.not. allocated(error)) return
@@ -986,11 +698,13 @@ contains
     end function launcher_rank
 
     !> For programs: print `name: message` as one line on stderr (control
-    !> characters shown escaped) and stop with exit status 2.
+    !> characters shown escaped) and stop with exit status 2, or 1 if the
+    !> error is output that could not be written.
     subroutine fail(name, error)
         character(len=*), intent(in) :: name
         type(error_t), intent(in) :: error
         write (error_unit, "(a)") name//": "//printable(error%message)
+        if (error%code == error_output) stop 1, quiet=.true.
         stop 2, quiet=.true.
     end subroutine fail
 

@@ -8,16 +8,20 @@
 module sphere_row_error
     implicit none
     private
-    public :: error_t, fatal_error, error_input, error_io
+    public :: error_t, fatal_error, error_input, error_io, error_output
 
     !> Code of an error in what the user gave: a key, a value, a file's content.
     integer, parameter :: error_input = 1
     !> Code of an error reading or writing a file.
     integer, parameter :: error_io = 2
+    !> Code of a failed write of a program's output (a full disk, a closed
+    !> stdout): programs stop with exit status 1 rather than 2, the status of
+    !> refused input.
+    integer, parameter :: error_output = 3
 
     !> Why something could not be done.
     type :: error_t
-        !> error_input or error_io.
+        !> error_input, error_io or error_output.
         integer :: code = error_input
         !> One line, complete: the input at fault, its value, what is allowed.
         character(len=:), allocatable :: message

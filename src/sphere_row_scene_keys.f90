@@ -1,9 +1,9 @@
 !> The scene keys shared by the `sphere-row` CLI and the study programs (p, e,
 !> d, a, gaps, v0, masses, tol, max_collisions, calendar_from) on the key registry of
 !> `sphere_row_cli`, and the scene they give, refused where its scales do not
-!> fit in real(16).
+!> fit in real(16), or, for a run asked in real(8), in real(8).
 module sphere_row_scene_keys
-    use sphere_row_kinds, only: qp
+    use sphere_row_kinds, only: dp, qp
     use sphere_row_format, only: itoa, short_text
     use sphere_row_status, only: status_normal
     use sphere_row_error, only: error_t, fatal_error
@@ -12,7 +12,7 @@ module sphere_row_scene_keys
     use sphere_row_read, only: printable
     implicit none
     private
-    public :: add_scene_keys, scene_from_cli, max_spheres
+    public :: add_scene_keys, scene_from_cli, check_scene_in_dp, max_spheres
 
     !> Largest number of spheres: every per-sphere array of a run is allocated
     !> from p, so p is bounded to what fits in memory many times over.
@@ -107,7 +107,8 @@ contains
         else
             allocate (gaps(p - 1), source=cli%get_real("a"))
         end if
-        call check_scales(cli, p, cli%get_real("d"), cli%get_real("v0"), masses, gaps, error)
+        call check_scales(cli, p, cli%get_real("d"), cli%get_real("v0"), masses, gaps, &
+            huge(1.0_qp), "real(16)", error)
         if (allocated(error)) return
         call scene_init(scene, stat, msg, p=p, e=e, d=cli%get_real("d"), &
             v0=cli%get_real("v0"), tol=cli%get_real("tol"), &
@@ -116,18 +117,68 @@ contains
         scene%calendar_from = cli%get_int("calendar_from")
     end subroutine scene_from_cli
 
+    !> Refuse a scene that a run in real(8) (precision = dp) cannot carry:
+    !> every value not 0 must be a normal real(8) (a subnormal one keeps
+    !> fewer digits, a smaller one reads as 0 and a larger one as inf), and
+    !> the scene's scales must be finite in real(8), as scene_from_cli asks
+    !> of real(16). The tolerance is not checked: below real(8)'s range it
+    !> becomes 0, which decides the same for every rate real(8) can hold.
+    subroutine check_scene_in_dp(cli, scene, error)
+        type(cli_t), intent(in) :: cli
+        type(scene_t), intent(in) :: scene
+        type(error_t), allocatable, intent(out) :: error
+        character(len=:), allocatable :: gap_key
+        gap_key = "a"
+        if (cli%given("gaps")) gap_key = "gaps"
+        if (find_key(cli, "e") > 0) call check_values("e", [scene%e])
+        if (.not. allocated(error)) call check_values("d", [scene%d])
+        if (.not. allocated(error)) call check_values(gap_key, scene%a)
+        if (.not. allocated(error)) call check_values("v0", [scene%v0])
+        if (.not. allocated(error)) call check_values("masses", scene%m)
+        if (allocated(error)) return
+        call check_scales(cli, scene%p, scene%d, scene%v0, scene%m, scene%a, &
+            real(huge(1.0_dp), qp), "real(8) (precision = dp)", error)
+    contains
+        !> Each value of key `name` is 0 or a normal real(8).
+        subroutine check_values(name, xs)
+            character(len=*), intent(in) :: name
+            real(qp), intent(in) :: xs(:)
+            real(qp), parameter :: top = real(huge(1.0_dp), qp), low = real(tiny(1.0_dp), qp)
+            character(len=:), allocatable :: which, allowed
+            integer :: i
+            allowed = "with precision = dp, 0 or a magnitude between "//short_text(low, 3, "up") &
+                //" and "//short_text(top, 3, "down")//" (precision = qp or auto takes it)"
+            do i = 1, size(xs)
+                if (xs(i) == 0.0_qp .or. (abs(xs(i)) >= low .and. abs(xs(i)) <= top)) cycle
+                which = "precision = dp: "
+                if (name == "masses" .or. name == "gaps") then
+                    which = which//"value "//itoa(i)//" is "//short_text(xs(i))//": "
+                end if
+                if (abs(xs(i)) > top) then
+                    which = which//"beyond the largest real(8) number "//short_text(top, 3, "down")
+                else
+                    which = which//"below the smallest normal real(8) number " &
+                        //short_text(low, 3, "down")
+                end if
+                call refuse_scale(error, cli, name, which//"; allowed "//allowed)
+                return
+            end do
+        end subroutine check_values
+    end subroutine check_scene_in_dp
+
     !> Refuse a scene whose length, time, velocity or position scale is not
-    !> finite in real(16), naming the key that makes it so.
-    subroutine check_scales(cli, p, d, v0, masses, gaps, error)
+    !> finite in the kind whose largest number is `big` (named `kind_name`),
+    !> naming the key that makes it so.
+    subroutine check_scales(cli, p, d, v0, masses, gaps, big, kind_name, error)
         type(cli_t), intent(in) :: cli
         integer, intent(in) :: p
-        real(qp), intent(in) :: d, v0, masses(:), gaps(:)
+        real(qp), intent(in) :: d, v0, masses(:), gaps(:), big
+        character(len=*), intent(in) :: kind_name
         type(error_t), allocatable, intent(out) :: error
         character(len=*), parameter :: row_text = "(p-1) d + sum(gaps)", &
             spread_text = "(1 + 2 sum(m)/min(m)) ((p-1) d + sum(gaps))"
-        real(qp) :: row, gap_sum, diameters, ratio, big
+        real(qp) :: row, gap_sum, diameters, ratio
         character(len=:), allocatable :: gap_key, limit, culprit
-        big = huge(1.0_qp)
         limit = short_text(big, 3, "down")
         gap_key = "a"
         if (cli%given("gaps")) gap_key = "gaps"
@@ -139,31 +190,32 @@ contains
         if (.not. (diameters <= big) .or. diameters >= gap_sum) culprit = "d"
         if (.not. (row <= big)) then
             call refuse_scale(error, cli, culprit, "the row's length "//row_text &
-                //" overflows real(16); allowed "//row_text//" <= "//limit)
+                //" overflows "//kind_name//"; allowed "//row_text//" <= "//limit)
             return
         end if
         if (.not. (gap_sum/v0 <= big)) then
             call refuse_scale(error, cli, "v0", "the time scale sum(gaps)/v0 overflows " &
-                //"real(16) (sum(gaps) = "//short_text(gap_sum, 3)//"); allowed v0 >= " &
+                //kind_name//" (sum(gaps) = "//short_text(gap_sum, 3)//"); allowed v0 >= " &
                 //short_text(gap_sum/big, 3, "up"))
             return
         end if
         ratio = sum(masses)/minval(masses)
         if (.not. (ratio <= big/2.0_qp)) then
             call refuse_scale(error, cli, "masses", "sum(masses)/min(masses) overflows " &
-                //"real(16); allowed sum(masses)/min(masses) <= " &
+                //kind_name//"; allowed sum(masses)/min(masses) <= " &
                 //short_text(big/2.0_qp, 3, "down"))
             return
         end if
         if (.not. (2.0_qp*ratio*v0 <= big)) then
             call refuse_scale(error, cli, "v0", "the velocity scale 2 v0 sum(m)/min(m) " &
-                //"overflows real(16); allowed v0 <= "//short_text(big/(2.0_qp*ratio), 3, "down"))
+                //"overflows "//kind_name//"; allowed v0 <= " &
+                //short_text(big/(2.0_qp*ratio), 3, "down"))
             return
         end if
         if (.not. ((1.0_qp + 2.0_qp*ratio)*row <= big)) then
             if (ratio > real(p, qp)) culprit = "masses"
             call refuse_scale(error, cli, culprit, "the positions' scale "//spread_text &
-                //" overflows real(16); allowed "//spread_text//" <= "//limit)
+                //" overflows "//kind_name//"; allowed "//spread_text//" <= "//limit)
         end if
     end subroutine check_scales
 

@@ -142,6 +142,8 @@ contains
         call check(error, status == 0, "--help: exit status")
         call check(error, index(out, "masses=") > 0 .and. index(out, "events=") > 0 .and. &
             index(out, "max_collisions=") > 0 .and. index(out, "tol=") > 0, "--help: keys")
+        call check(error, index(out, "precision=qp") > 0 .and. &
+            index(out, "allowed qp, dp or auto") > 0, "--help: the words of precision")
     end subroutine test_help
 
 end module test_cli

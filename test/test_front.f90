@@ -3,13 +3,15 @@
 !> accepted inputs and the strict readers on their own.
 !>
 !> A row's argument list is written with blanks between arguments; inside an
-!> argument `\s` stands for a blank, `\n` for a line feed, `\t` for a tab and
-!> `\e` alone for an empty argument. Files named `F/...` are written by
-!> write_scene_files into build/test_front/.
+!> argument `\s` stands for a blank, `\n` for a line feed, `\t` for a tab,
+!> `\xHH` for the byte of hexadecimal code HH and `\e` alone for an empty
+!> argument. Files named `F/...` are written by write_scene_files into
+!> build/test_front/.
 module test_front
+    use, intrinsic :: iso_fortran_env, only: int64
     use sphere_row, only: qp, scene_t, itoa
     use sphere_row_cli, only: cli_t, string_t
-    use sphere_row_scene_keys, only: add_scene_keys, scene_from_cli
+    use sphere_row_scene_keys, only: add_scene_keys, scene_from_cli, check_scene_in_dp
     use sphere_row_read, only: read_real, read_int, read_reals, is_real_text, is_int_text, &
         printable
     use sphere_row_format, only: short_text, real_text, number_text_length
@@ -46,7 +48,13 @@ contains
             new_unittest("int_syntax", test_int_syntax), &
             new_unittest("printable_and_short_text", test_printable), &
             new_unittest("real_text_as_formatted_write", test_real_text), &
-            new_unittest("help_from_registry", test_help) &
+            new_unittest("help_from_registry", test_help), &
+            new_unittest("range_on_the_digits", test_range_digits), &
+            new_unittest("scene_file_linear_time", test_linear_reading), &
+            new_unittest("stdin_scene", test_stdin), &
+            new_unittest("output_write_checked", test_output_checked), &
+            new_unittest("time_overflow_names_v0", test_time_overflow), &
+            new_unittest("no_trailing_blank", test_no_trailing_blank) &
             ]
     end function collect_front
 
@@ -64,7 +72,8 @@ contains
         type(bad_case_t), allocatable :: rows(:)
         rows = [bad_number_syntax(), bad_not_numbers(), bad_beyond_real16(), bad_out_of_range(), &
             bad_integers(), bad_lists(), bad_keys_twice(), bad_unknown_keys(), &
-            bad_scales(), bad_scene_files()]
+            bad_scales(), bad_scene_files(), bad_real8(), bad_subnormal(), bad_words(), &
+            bad_hostile_files()]
     end function malformed_inputs
 
     !> Malformed inputs: numbers that list-directed input would take.
@@ -119,6 +128,12 @@ contains
             bad("v0=-1e5000", 2, "v0 = -1e5000: beyond the largest real(16)"), &
             bad("d=1d5000", 2, "d = 1d5000: beyond the largest real(16)"), &
             bad("tol=1e-5000", 2, "tol = 1e-5000: too small for real(16)"), &
+            bad("e=1.00000000000000000000000000000000001", 2, &
+            "e = 1.00000000000000000000000000000000001: allowed 0 <= e <= 1"), &
+            bad("e=1.0000000000000000000000000000000000000000000000000001", 2, &
+            ": allowed 0 <= e <= 1"), &
+            bad("tol=-0.0000000000000000000000000000000000000000001", 2, &
+            ": allowed 0 <= tol < 1"), &
             bad("v0=1e-99999", 2, "v0 = 1e-99999: too small for real(16)") &
             ]
     end function bad_beyond_real16
@@ -224,8 +239,8 @@ contains
     function bad_scene_files() result(rows)
         type(bad_case_t), allocatable :: rows(:)
         rows = [ &
-            bad("no_such_file.nml", 2, "file = no_such_file.nml: cannot be opened"), &
-            bad("F/good.nml F/good.nml", 2, "a second scene file"), &
+            bad("no_such_file.nml", 2, "file 'no_such_file.nml': cannot be opened"), &
+            bad("F/good.nml F/good.nml", 2, "good.nml': a second scene file (the first is '"), &
             bad("F/element.nml", 2, "element.nml': masses(4) = 2: not a key name"), &
             bad("F/list_directed.nml", 2, "list_directed.nml': e = 1-5: not a number"), &
             bad("F/repeat.nml", 2, "repeat.nml': masses = 4*1: value 1 = 4*1"), &
@@ -242,9 +257,79 @@ contains
             bad("F/range.nml e=0.5", 2, "range.nml': e = 2: allowed 0 <= e <= 1"), &
             bad("F/gaps.nml a=2", 2, "a = 2: gaps = 1,2,3 is given too"), &
             bad("F/scale.nml", 2, "scale.nml': d = 1e4932: the row's length"), &
-            bad("F", 2, "test_front': empty (or not a file)") &
+            bad("F", 2, "test_front': a directory; allowed a readable regular file") &
             ]
     end function bad_scene_files
+
+    !> Malformed inputs with precision = dp: values and scales real(8) cannot hold.
+    function bad_real8() result(rows)
+        type(bad_case_t), allocatable :: rows(:)
+        character(len=*), parameter :: below = "below the smallest normal real(8) number", &
+            beyond = "beyond the largest real(8) number"
+        rows = [ &
+            bad("v0=1e-400 precision=dp", 2, "v0 = 1e-400: precision = dp: "//below), &
+            bad("v0=1e400 precision=dp", 2, "v0 = 1e400: precision = dp: "//beyond), &
+            bad("d=1e400 precision=dp", 2, "d = 1e400: precision = dp: "//beyond), &
+            bad("a=1e400 precision=dp", 2, "a = 1e400: precision = dp: "//beyond), &
+            bad("e=1e-400 precision=dp", 2, "e = 1e-400: precision = dp: "//below), &
+            bad("masses=1e-400,1,1,1 precision=dp", 2, "value 1 is 1e-400: "//below), &
+            bad("masses=1e-400,1e-400,1e-400,1e-400 precision=dp", 2, "masses = 1e-400,"), &
+            bad("gaps=1,1e-310,1 precision=dp", 2, "gaps = 1,1e-310,1: precision = dp: value 2"), &
+            bad("d=1e308 precision=dp", 2, "d = 1e308: the row's length (p-1) d + sum(gaps) " &
+            //"overflows real(8) (precision = dp)"), &
+            bad("v0=1e-300 a=1e10 precision=dp", 2, "v0 = 1e-300: the time scale"), &
+            bad("v0=1e308 precision=dp", 2, "v0 = 1e308: the velocity scale") &
+            ]
+    end function bad_real8
+
+    !> Malformed inputs: values below the normal range of real(16), which
+    !> would run with other digits than the ones given.
+    function bad_subnormal() result(rows)
+        type(bad_case_t), allocatable :: rows(:)
+        character(len=*), parameter :: small = "too small for real(16): not 0 and below its " &
+            //"smallest normal number 3.36e-4932"
+        rows = [ &
+            bad("a=1e-4964", 2, "a = 1e-4964: "//small), &
+            bad("a=1e-4965", 2, "a = 1e-4965: "//small), &
+            bad("v0=1e-4940", 2, "v0 = 1e-4940: "//small), &
+            bad("tol=1e-4940", 2, "tol = 1e-4940: "//small), &
+            bad("d=-1e-4933", 2, "d = -1e-4933: "//small), &
+            bad("masses=1e-4962,3e-4962,1e-4962,1e-4962", 2, "value 1 = 1e-4962: "//small), &
+            bad("gaps=1,1e-4935,1", 2, "gaps = 1,1e-4935,1: value 2 = 1e-4935: "//small) &
+            ]
+    end function bad_subnormal
+
+    !> Malformed inputs: words with something around them, words of no choice.
+    function bad_words() result(rows)
+        type(bad_case_t), allocatable :: rows(:)
+        rows = [ &
+            bad("events=yes\s", 2, "events = yes : allowed yes or no"), &
+            bad("events=\tno", 2, "events = \tno: allowed yes or no"), &
+            bad("precision=qp\s", 2, "precision = qp : allowed qp, dp or auto"), &
+            bad("precision=\sauto", 2, "precision =  auto: allowed qp, dp or auto"), &
+            bad("precision=QP", 2, "precision = QP: allowed qp, dp or auto"), &
+            bad("precision=q", 2, "precision = q: allowed qp, dp or auto"), &
+            bad("precision=qp,dp", 2, "precision = qp,dp: allowed qp, dp or auto"), &
+            bad("precision=", 2, "precision = : allowed qp, dp or auto"), &
+            bad("e=\xff", 2, "e = \xff: not a number"), &
+            bad("\xc3\xa9=1", 2, "\xc3\xa9 = 1: unknown key"), &
+            bad("events=yes precision=dp", 2, "allowed only with precision = qp") &
+            ]
+    end function bad_words
+
+    !> Malformed inputs: what is not a scene file.
+    function bad_hostile_files() result(rows)
+        type(bad_case_t), allocatable :: rows(:)
+        rows = [ &
+            bad("/dev/zero", 2, "file '/dev/zero': not a regular file"), &
+            bad("/dev/urandom", 2, "file '/dev/urandom': not a regular file"), &
+            bad("F/fifo", 2, "fifo': not a regular file (a device, a FIFO or a socket)"), &
+            bad("F/binary.nml", 2, "binary.nml': byte 10 is the control character \x00"), &
+            bad("F/escape.nml", 2, "escape.nml': byte 7 is the control character \x1b"), &
+            bad("F/unicode.nml", 2, "unicode.nml': e = 0.\xc2\xbd: not a number"), &
+            bad("--", 2, "argument '--': allowed key=value") &
+            ]
+    end function bad_hostile_files
 
     !> The scene files the table names.
     subroutine write_scene_files()
@@ -266,6 +351,10 @@ contains
         call write_file("range.nml", "&scene e=2 /")
         call write_file("gaps.nml", "&scene gaps=1,2,3 /")
         call write_file("scale.nml", "&scene d=1e4932 /")
+        call write_file("binary.nml", "&scene e="//achar(0)//"0.5 /")
+        call write_file("escape.nml", "&scene"//achar(27)//" e=0.5 /")
+        call write_file("unicode.nml", "&scene e=0."//achar(194)//achar(189)//" /")
+        call execute_command_line("rm -f "//dir//"/fifo && mkfifo "//dir//"/fifo")
         call write_file("commented.nml", "! the definition's row, heavier last sphere" &
             //new_line("a")//"&SCENE  P = 4,  E = 0.5,   ! restitution"//new_line("a") &
             //"  masses = 1, 1, 1,"//new_line("a")//"    2, gaps=1 2 3, /"//new_line("a"))
@@ -328,6 +417,9 @@ contains
                     arg = arg//new_line("a")
                 case ("t")
                     arg = arg//achar(9)
+                case ("x")
+                    arg = arg//achar(hex_value(text(i + 2:i + 3)))
+                    i = i + 2
                 case default
                     arg = arg//text(i:i + 1)
                 end select
@@ -338,6 +430,13 @@ contains
             end if
         end do
     end function unescape
+
+    !> The value of two hexadecimal digits (lower case).
+    pure integer function hex_value(digits)
+        character(len=2), intent(in) :: digits
+        hex_value = 16*(index("0123456789abcdef", digits(1:1)) - 1) &
+            + index("0123456789abcdef", digits(2:2)) - 1
+    end function hex_value
 
     !> The arguments quoted for the shell.
     pure function quoted(args) result(line)
@@ -373,14 +472,33 @@ contains
         path = program_path(name)
     end function fresh_program_path
 
-    !> A registry like the CLI's: the scene keys and `events`.
+    !> A registry like the CLI's: the scene keys, `events` and `precision`.
     subroutine cli_keys(cli)
         type(cli_t), intent(out) :: cli
         cli%name = "sphere-row"
         cli%synopsis = "[FILE] [key=value ...]"
         call add_scene_keys(cli)
         call cli%add_flag("events", "no", "yes adds the event table")
+        call cli%add_choice("precision", "qp", [character(len=4) :: "qp", "dp", "auto"], &
+            "the precision of the run")
     end subroutine cli_keys
+
+    !> The scene of a registry as sphere-row takes it: scene_from_cli, the
+    !> event table only in real(16), and the checks of real(8) for dp.
+    subroutine cli_scene(cli, scene, refused)
+        type(cli_t), intent(in) :: cli
+        type(scene_t), intent(out) :: scene
+        type(input_error_t), allocatable, intent(out) :: refused
+        call scene_from_cli(cli, scene, refused)
+        if (allocated(refused)) return
+        if (cli%get_flag("events") .and. cli%get_word("precision") /= "qp") then
+            allocate (refused)
+            refused%message = "events = yes with precision = "//cli%get_word("precision") &
+                //": allowed only with precision = qp"
+        else if (cli%get_word("precision") == "dp") then
+            call check_scene_in_dp(cli, scene, refused)
+        end if
+    end subroutine cli_scene
 
     !> The table holds at least 60 malformed inputs, each expecting exit status 2.
     subroutine test_table_size(error)
@@ -438,7 +556,7 @@ contains
         do i = 1, size(rows)
             call cli_keys(cli)
             call cli%parse(decode(rows(i)%args), refused)
-            if (.not. allocated(refused)) call scene_from_cli(cli, scene, refused)
+            if (.not. allocated(refused)) call cli_scene(cli, scene, refused)
             call check(error, allocated(refused), rows(i)%args//": accepted by the parser")
             if (allocated(error)) return
             call check(error, index(refused%message, rows(i)%expect) > 0, rows(i)%args &
@@ -478,10 +596,11 @@ contains
         call check(error, scene%p == 4 .and. scene%e == 0.2_qp .and. scene%d == 1.0_qp .and. &
             scene%v0 == 1.0_qp .and. scene%tol == epsilon(1.0_qp) .and. all(scene%a == 1.0_qp) &
             .and. all(scene%m == 1.0_qp) .and. .not. cli%get_flag("events"), "defaults")
-        ! a subnormal tol is a number real(16) holds
+        ! the smallest normal real(16) and a value just above it are taken
         call cli_keys(cli)
-        call cli%parse(decode("tol=1e-4940"), refused)
-        call check(error, .not. allocated(refused), "tol=1e-4940 refused: "//message(refused))
+        call cli%parse(decode("tol=3.3621031431120935062626778173217526e-4932 v0=1e-4931"), &
+            refused)
+        call check(error, .not. allocated(refused), "tol=tiny refused: "//message(refused))
     end subroutine test_accepted
 
     !> A scene file with comments, upper case, blanks and line breaks; keys on
@@ -666,6 +785,159 @@ contains
             index(text, "allowed v0 > 0") > 0 .and. index(text, "allowed 0 <= tol < 1") > 0, &
             "ranges")
     end subroutine test_help
+
+    !> A range is decided on the number as written: just above a closed
+    !> bound is refused (in the table), just below an open one is taken, as
+    !> the real(16) next inside (its rounding is the bound itself).
+    subroutine test_range_digits(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(input_error_t), allocatable :: refused
+        type(cli_t) :: cli
+        type(scene_t) :: scene
+        integer :: status
+        character(len=:), allocatable :: out, err
+        call cli_keys(cli)
+        call cli%parse(decode("tol=0.99999999999999999999999999999999999999 " &
+            //"e=0.99999999999999999999999999999999999999"), refused)
+        if (.not. allocated(refused)) call scene_from_cli(cli, scene, refused)
+        call check(error, .not. allocated(refused), "tol just below 1 refused: " &
+            //message(refused))
+        if (allocated(error)) return
+        call check(error, scene%tol == nearest(1.0_qp, -1.0_qp), "tol is not the real(16) " &
+            //"next below 1: "//short_text(scene%tol))
+        call check(error, scene%e == 1.0_qp, "e just below 1 is not 1: "//short_text(scene%e))
+        ! in real(8) too, where that tol rounds to 1 once more (it crashed the
+        ! run in real(8), found by the fuzz)
+        call run_program("tol=0.99999999999999999999999999999999999999 precision=dp", status, &
+            out, err)
+        call check(error, status == 0 .and. index(out, "precision dp") > 0, &
+            "tol just below 1, precision=dp: status "//itoa(status)//": "//err)
+    end subroutine test_range_digits
+
+    !> A scene file of 400,000 line ends and a list of 40,000 masses is read
+    !> in well under a second (reading it took 14 s when each line was
+    !> appended to the text read so far).
+    subroutine test_linear_reading(error)
+        type(error_t), allocatable, intent(out) :: error
+        integer, parameter :: p = 40000
+        type(input_error_t), allocatable :: refused
+        type(cli_t) :: cli
+        type(scene_t) :: scene
+        character(len=:), allocatable :: masses
+        integer :: unit, i
+        integer(int64) :: start, finish, rate
+        call write_scene_files()
+        allocate (character(len=2*p - 1) :: masses)
+        do i = 1, p
+            masses(2*i - 1:2*i - 1) = "1"
+            if (i < p) masses(2*i:2*i) = ","
+        end do
+        open (newunit=unit, file=dir//"/long.nml", status="replace", action="write", &
+            access="stream", form="unformatted")
+        write (unit) repeat(new_line("a"), 400000)//"&scene p = "//itoa(p)//", masses = " &
+            //masses//" /"//new_line("a")
+        close (unit)
+        call system_clock(start, rate)
+        call cli_keys(cli)
+        call cli%parse(decode("F/long.nml"), refused)
+        if (.not. allocated(refused)) call scene_from_cli(cli, scene, refused)
+        call system_clock(finish)
+        call check(error, .not. allocated(refused), "long.nml refused: "//message(refused))
+        if (allocated(error)) return
+        call check(error, scene%p == p .and. size(scene%m) == p, "long.nml: p or masses")
+        call check(error, real(finish - start)/real(rate) < 1.0, "long.nml read in " &
+            //short_text(real(finish - start, qp)/rate, 3)//" s")
+    end subroutine test_linear_reading
+
+    !> `-` reads the scene from standard input; a binary stream is refused at
+    !> its first control byte, not read to its end.
+    subroutine test_stdin(error)
+        type(error_t), allocatable, intent(out) :: error
+        integer :: status
+        character(len=:), allocatable :: out, err
+        call write_scene_files()
+        call run_program("- < "//dir//"/good.nml", status, out, err)
+        call check(error, status == 0 .and. index(out, "collisions 5"//new_line("a")) == 1, &
+            "- < good.nml: "//out//err)
+        call run_program("- e=0 < "//dir//"/good.nml", status, out, err)
+        call check(error, status == 0 .and. index(out, "status quasi_plastic") > 0, &
+            "- e=0 < good.nml: "//err)
+        call run_program("- < /dev/zero", status, out, err)
+        call check(error, status == 2 .and. len(out) == 0 .and. count_lines(err) == 1 .and. &
+            index(err, "file '-': byte 1 is the control character \x00") > 0, &
+            "- < /dev/zero: "//err)
+        call run_program("- < /dev/null", status, out, err)
+        call check(error, status == 2 .and. count_lines(err) == 1 .and. &
+            index(err, "file '-': empty") > 0, "- < /dev/null: "//err)
+    end subroutine test_stdin
+
+    !> Output that cannot be written (a full device, a closed stdout) is an
+    !> error: exit status 1 and one line on stderr, not exit 0 and nothing.
+    subroutine test_output_checked(error)
+        type(error_t), allocatable, intent(out) :: error
+        character(len=*), parameter :: cases(3) = [character(len=30) :: &
+            "e=0.2 > /dev/full", "e=0.2 >&-", "--help > /dev/full"]
+        integer :: status, i
+        character(len=:), allocatable :: out, err
+        do i = 1, size(cases)
+            call run_program(trim(cases(i)), status, out, err, stdout=.false.)
+            call check(error, status == 1, trim(cases(i))//": exit status "//itoa(status))
+            call check(error, count_lines(err) == 1 .and. index(err, "sphere-row: output = " &
+                //"standard output: cannot be written (") == 1, trim(cases(i))//": "//err)
+        end do
+        call run_program("e=0.2 > /dev/full", status, out, err, stdout=.false.)
+        call check(error, index(err, "No space left on device") > 0, "/dev/full: "//err)
+    end subroutine test_output_checked
+
+    !> A run whose times overflow real(16) is refused naming v0 and the
+    !> smallest v0 whose times stay finite (v0 = 1e-4931 passes the a priori
+    !> time scale sum(gaps)/v0, but t_end = 14.9/v0 does not fit).
+    subroutine test_time_overflow(error)
+        type(error_t), allocatable, intent(out) :: error
+        integer :: status
+        character(len=:), allocatable :: out, err
+        call run_program("v0=1e-4931", status, out, err)
+        call check(error, status == 2 .and. len(out) == 0 .and. count_lines(err) == 1, &
+            "v0=1e-4931: status "//itoa(status)//": "//out//err)
+        call check(error, index(err, "sphere-row: v0 = 1e-4931: the run's times (t_end = " &
+            //"14.9") == 1 .and. index(err, "overflow real(16); allowed v0 >= 1.26e-4931") > 0, &
+            "v0=1e-4931: "//err)
+        call run_program("v0=1.26e-4931", status, out, err)
+        call check(error, status == 0 .and. index(out, "collisions 13") == 1, &
+            "v0=1.26e-4931, the bound given, refused: "//err)
+    end subroutine test_time_overflow
+
+    !> An answer's lines end without a blank: `certified no` too (e = 0.05 is
+    !> not certified).
+    subroutine test_no_trailing_blank(error)
+        type(error_t), allocatable, intent(out) :: error
+        integer :: status
+        character(len=:), allocatable :: out, err
+        call run_program("e=0.05 precision=auto", status, out, err)
+        call check(error, status == 0 .and. index(out, new_line("a")//"certified no" &
+            //new_line("a")) > 0, "certified no: "//out//err)
+        call check(error, index(out, " "//new_line("a")) == 0, "a line ends in a blank: "//out)
+    end subroutine test_no_trailing_blank
+
+    !> Run `sphere-row args` (shell redirections allowed) with stdout and
+    !> stderr to files unless `stdout` is false (the caller redirects it).
+    subroutine run_program(args, status, out, err, stdout)
+        character(len=*), intent(in) :: args
+        integer, intent(out) :: status
+        character(len=:), allocatable, intent(out) :: out, err
+        logical, intent(in), optional :: stdout
+        character(len=:), allocatable, save :: path
+        character(len=:), allocatable :: to_out
+        if (.not. allocated(path)) path = program_path("sphere-row")
+        to_out = " > "//out_file
+        if (present(stdout)) then
+            if (.not. stdout) to_out = ""
+        end if
+        call execute_command_line("rm -f "//out_file//"; "//path//" "//args//to_out//" 2> " &
+            //err_file, exitstat=status)
+        out = read_text(out_file)
+        err = read_text(err_file)
+    end subroutine run_program
 
     function message(refused) result(text)
         type(input_error_t), allocatable, intent(in) :: refused

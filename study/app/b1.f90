@@ -4,12 +4,13 @@
 program c12_b1
     use sphere_row, only: qp, scene_t, run_t, event_log_t, simulate, str, status_word, &
         status_normal, status_collapsed, itoa, auto_t, simulate_auto
-    use sphere_row_tables, only: open_table, write_answer, answer_header, tab, row_t, write_rows
+    use sphere_row_tables, only: open_table, close_table, write_answer, answer_header, tab, &
+        row_t, write_rows
     use sphere_row_analysis, only: sequence_of, sequence_text, sequence_hash, tail_period, &
         critical_restitution
     use sphere_row_bisection, only: bisect_ahead, bisect_changes
     use sphere_row_study_cli, only: cli_t, add_scene_keys, start_program, read_keys, &
-        stop_unless_normal, add_precision_key, precision_is_auto
+        stop_unless_normal, stop_unless_written, add_precision_key, precision_is_auto
     use sphere_row_sorting, only: sort
     implicit none
     character(len=*), parameter :: nl = new_line("a")
@@ -111,7 +112,8 @@ contains
         end do
         !$omp end parallel do
         call write_rows(unit, scan_rows)
-        close (unit)
+        call close_table(unit, stat, msg)
+        call stop_unless_written(stat, msg)
     end subroutine scan
 
     !> Step 2: every change of (n, sequence) between neighbours of the scan,
@@ -252,7 +254,8 @@ contains
                 end if
             end associate
         end do
-        close (unit)
+        call close_table(unit, stat, msg)
+        call stop_unless_written(stat, msg)
         slope = 0
         intercept = 0
         if (n_fit >= 2) then
@@ -283,7 +286,8 @@ contains
         call write_answer(unit, "b1.n_at_e1", itoa(n_scan_runs(1)), "closed_form", &
             itoa(scene%p - 1), itoa(n_scan_runs(1) - (scene%p - 1)), &
             "e = 1: one collision per pair")
-        close (unit)
+        call close_table(unit, stat, msg)
+        call stop_unless_written(stat, msg)
     end subroutine write_answers
 
     !> The answers about e_crit: from the collapse cycle and by simulation
@@ -372,7 +376,8 @@ contains
                 itoa(run%n)//tab//status_word(run%status)//tab//sequence_text(pairs)
             n_intervals = n_intervals + 1
         end if
-        close (unit)
+        call close_table(unit, stat, msg)
+        call stop_unless_written(stat, msg)
     end subroutine write_intervals
 
     !> Whether the run at e with the scene's tolerance collapses (own scene and run: thread-safe).

@@ -7,9 +7,10 @@ program c12_bench
         int64
     use sphere_row, only: qp, dp, scene_t, scene_init, status_normal, itoa, real_str
     use sphere_row_kind_engines, only: built_kinds, kind_info_t, kind_engine_t, new_kind_engine
-    use sphere_row_tables, only: open_table, tab, split_tabs, cpu_model
+    use sphere_row_tables, only: open_table, close_table, tab, split_tabs, cpu_model
     use sphere_row_monte_carlo, only: mc_counts_t, monte_carlo_v4
-    use sphere_row_study_cli, only: cli_t, start_program, read_keys, fail, stop_unless_normal
+    use sphere_row_study_cli, only: cli_t, start_program, read_keys, fail, stop_unless_normal, &
+        stop_unless_written
     use sphere_row_sorting, only: median
     implicit none
     character(len=*), parameter :: nl = new_line("a")
@@ -60,7 +61,8 @@ program c12_bench
     write (unit, "(a, f0.3, a)") "study.total_seconds"//tab, seconds, tab//"s"//tab// &
         "wall time of the study programs (six tasks and the methods) of one make study, "// &
         "one after the other"
-    close (unit)
+    call close_table(unit, stat, msg)
+    call stop_unless_written(stat, msg)
 
 contains
 

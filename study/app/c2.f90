@@ -20,7 +20,7 @@
 !> law of v4 = v0 ((1+e)/2)^3, valid where sphere 4 is struck once; the bound
 !> of that region is found with the engine and the samples below it counted.
 program c12_c2
-    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit, int64, int8
+    use, intrinsic :: iso_fortran_env, only: error_unit, int64, int8
     use sphere_row, only: dp, qp, scene_t, itoa
     use sphere_row_monte_carlo, only: mc_counts_t, monte_carlo_v4, normal_mass_outside_unit, &
         min_acceptance, mc_block_size
@@ -28,7 +28,7 @@ program c12_c2
         gather_records, layout_blocks
     use sphere_row_c2_tables, only: c2_sample_t, c2_statistics, c2_write_tables
     use sphere_row_study_cli, only: cli_t, add_scene_keys, start_program, read_keys, fail, &
-        stop_unless_normal, add_precision_key, precision_is_auto
+        say, stop_unless_normal, add_precision_key, precision_is_auto
     use sphere_row_terminal, only: stderr_is_terminal
     use sphere_row_error, only: error_t
     implicit none
@@ -92,8 +92,8 @@ contains
         if (allocated(error)) call fail(error)
         call c2_write_tables(c, out, error)
         if (allocated(error)) call fail(error)
-        write (output_unit, "(a)") name//": "//itoa(c%nmax)//" runs in "//fixed(seconds) &
-            //" s ("//fixed(1.0e6_dp*seconds/c%nmax)//" us per run); tables in "//out
+        call say(name//": "//itoa(c%nmax)//" runs in "//fixed(seconds) &
+            //" s ("//fixed(1.0e6_dp*seconds/c%nmax)//" us per run); tables in "//out)
     end subroutine write_results
 
     !> This rank's blocks of the stream (all of them on one process), timed:

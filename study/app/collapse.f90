@@ -12,9 +12,10 @@ program c12_collapse
     use sphere_row_survey, only: survey_t, survey_open, survey_close, survey_scene, &
         check_invariants, scene_command, further_t, step_further, further_word, &
         further_none, further_going
-    use sphere_row_tables, only: open_table, write_answer, answer_header, tab, row_t, &
-        write_rows
-    use sphere_row_study_cli, only: cli_t, start_program, read_keys, stop_unless_normal
+    use sphere_row_tables, only: open_table, close_table, write_answer, answer_header, tab, &
+        row_t, write_rows
+    use sphere_row_study_cli, only: cli_t, start_program, read_keys, stop_unless_normal, &
+        stop_unless_written
     implicit none
     character(len=*), parameter :: nl = new_line("a")
     !> Rules compared: closed-form limits with the fallback, the fallback alone.
@@ -186,7 +187,8 @@ contains
                 itoa(broken(rule))//tab//str(mean_collisions(rule))//tab// &
                 str(real(seconds_max(rule), qp))//tab//str(real(seconds_sum(rule), qp))
         end do
-        close (unit)
+        call close_table(unit, stat, msg)
+        call stop_unless_written(stat, msg)
         call open_table(out, "collapse_by_p.tsv", "p"//tab//"scenes"//tab//"answered"//tab// &
             "answered_share", unit, stat, msg)
         call stop_unless_normal(stat, msg)
@@ -195,13 +197,15 @@ contains
             write (unit, "(a)") itoa(p)//tab//itoa(by_p(1, p))//tab//itoa(by_p(2, p))//tab// &
                 str(real(by_p(2, p), qp)/by_p(1, p))
         end do
-        close (unit)
+        call close_table(unit, stat, msg)
+        call stop_unless_written(stat, msg)
         call open_table(out, "collapse_unanswered.tsv", "row"//tab//"p"//tab//"e[1]"//tab// &
             "mass_ratio[1]"//tab//"closed_gaps"//tab//"block"//tab//"further_collisions"// &
             tab//"further_end"//tab//"further_decades[1]"//tab//"command", unit, stat, msg)
         call stop_unless_normal(stat, msg)
         call write_rows(unit, unanswered)
-        close (unit)
+        call close_table(unit, stat, msg)
+        call stop_unless_written(stat, msg)
         call open_table(out, "collapse_answers.tsv", answer_header, unit, stat, msg)
         call stop_unless_normal(stat, msg)
         call write_answer(unit, "collapse.answered", itoa(answered(closed)), "scenes", &
@@ -231,7 +235,8 @@ contains
             "expected", "0", itoa(broken(closed)), "runs that ended with momentum, energy, "// &
             "a gap or a closing pair outside "//str(slack)//" + "//str(per_collision)// &
             " n epsilon of their scales (n collisions)")
-        close (unit)
+        call close_table(unit, stat, msg)
+        call stop_unless_written(stat, msg)
     end subroutine write_tables
 
     !> The row of collapse_unanswered.tsv of row `index` of the survey: its

@@ -12,10 +12,10 @@
 !> cost.tsv, cost_summary.tsv) are
 !> skipped: they are measurements.
 program tsv_compare
-    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
+    use, intrinsic :: iso_fortran_env, only: error_unit
     use sphere_row, only: qp, itoa
     use sphere_row_tables, only: split_tabs
-    use sphere_row_study_cli, only: cli_t, start_program, read_keys, fail
+    use sphere_row_study_cli, only: cli_t, start_program, read_keys, fail, say
     implicit none
     character(len=*), parameter :: name = "tsv-compare"
     type(cli_t) :: cli
@@ -36,7 +36,8 @@ program tsv_compare
     listing = "build/tsv-compare.list"
     call execute_command_line("mkdir -p build && ls -1 '"//fresh//"' | grep '\.tsv$' > " &
         //listing, exitstat=stat)
-    if (stat /= 0) call fail("fresh = "//fresh//": no .tsv files found")
+    if (stat /= 0) call fail("fresh = "//fresh//": no list of its .tsv files (none there, " &
+        //"or build/ cannot be written); allowed a directory of tables and a writable build/")
     open (newunit=unit, file=listing, status="old", action="read")
     n_files = 0
     n_values = 0
@@ -56,8 +57,8 @@ program tsv_compare
             itoa(n_files)//" tables: results/ is stale, run `make study` and commit"
         stop 1, quiet=.true.
     end if
-    write (output_unit, "(a)") name//": "//itoa(n_files)//" tables, "//itoa(n_values)// &
-        " numbers agree with "//committed
+    call say(name//": "//itoa(n_files)//" tables, "//itoa(n_values)// &
+        " numbers agree with "//committed)
 
 contains
 

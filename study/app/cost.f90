@@ -9,8 +9,9 @@ program c12_cost
     use, intrinsic :: iso_fortran_env, only: int64
     use sphere_row, only: qp, scene_t, run_t, scene_init, simulate, str, itoa, &
         status_normal, status_max_collisions
-    use sphere_row_tables, only: open_table, tab
-    use sphere_row_study_cli, only: cli_t, start_program, read_keys, fail, stop_unless_normal
+    use sphere_row_tables, only: open_table, close_table, tab
+    use sphere_row_study_cli, only: cli_t, start_program, read_keys, fail, stop_unless_normal, &
+        stop_unless_written
     use sphere_row_sorting, only: median
     use sphere_row_kinds, only: dp
     implicit none
@@ -52,7 +53,8 @@ program c12_cost
     call stop_unless_normal(stat, msg)
     call sweep(1, crossover(1))
     call sweep(2, crossover(2))
-    close (unit)
+    call close_table(unit, stat, msg)
+    call stop_unless_written(stat, msg)
     call write_summary()
 
 contains
@@ -134,7 +136,8 @@ contains
         write (u, "(a)") "elastic.time_ratio_"//itoa(p_long)//"_"//itoa(p_short)//tab// &
             str(real(median(ratios), qp))//tab//"wall time of one elastic row of "//itoa(p_long)// &
             " spheres over one of "//itoa(p_short)//", engine's choice, median of 5 pairs"
-        close (u)
+        call close_table(u, stat, msg)
+        call stop_unless_written(stat, msg)
     end subroutine write_summary
 
     !> Wall time of one elastic row of p spheres with the engine's choice.

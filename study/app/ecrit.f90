@@ -9,8 +9,9 @@
 !> bits for any number of threads and ranks.
 program c12_ecrit
     use sphere_row, only: qp, str, itoa
-    use sphere_row_tables, only: open_table, write_answer, answer_header, tab
-    use sphere_row_study_cli, only: cli_t, start_program, read_keys, fail, stop_unless_normal
+    use sphere_row_tables, only: open_table, close_table, write_answer, answer_header, tab
+    use sphere_row_study_cli, only: cli_t, start_program, read_keys, fail, stop_unless_normal, &
+        stop_unless_written
     use sphere_row_ecrit, only: ecrit_settings_t, ecrit_row_t, ecrit_row, row_estimate, &
         power_fit, mcnamara_young_k, mcnamara_young_e, outcome_word, row_bytes, row_from_bytes
     use sphere_row_ranks, only: ranks_t, record_t, ranks_start, ranks_finish, owner_of, &
@@ -160,7 +161,8 @@ contains
                     optional_real(mcnamara_young_e(r%p, k_my), k_my > 0.0_qp)
             end associate
         end do
-        close (unit)
+        call close_table(unit, stat, msg)
+        call stop_unless_written(stat, msg)
     end subroutine write_rows
 
     !> ecrit_answers.tsv: the rate-map answers and the counts over the rows.
@@ -195,7 +197,8 @@ contains
         call write_answer(unit, "ecrit.mcnamara_young_k", str(k_my), "-", "-", "-", &
             "K of p = K (-ln(1 - e_crit))/(1 - e_crit), McNamara and Young's scaling, least "// &
             "squares through the origin over the same rows")
-        close (unit)
+        call close_table(unit, stat, msg)
+        call stop_unless_written(stat, msg)
     end subroutine write_answers
 
     !> The rate-map answer of row p, with the closed form `check` if given.

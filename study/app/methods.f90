@@ -3,18 +3,19 @@
 !> work-precision, stability over e, smallest distance to e_c per precision,
 !> costs per collision, and the platform the times were taken on.
 program c12_methods
-    use, intrinsic :: iso_fortran_env, only: output_unit, int64, &
+    use, intrinsic :: iso_fortran_env, only: int64, &
         compiler_version, compiler_options
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
     use sphere_row, only: dp, qp, scene_t, status_normal, status_word, str, itoa
-    use sphere_row_tables, only: cpu_model, tab, yes_no
+    use sphere_row_tables, only: open_table, close_table, cpu_model, tab, yes_no
     use sphere_row_outcome, only: outcome_t, comparison_t, compare_outcomes, classify, &
         category_word
     use sphere_row_methods, only: method_t, new_method, method_run, method_name, method_label, &
         method_setting, method_v_tol, kind_name, method_engine, method_absolute, method_ode, &
         method_stepping, stepper_rk8pd, stepper_rkf45, engine_methods, method_time
     use sphere_row_kind_engines, only: kind_info, kind_info_t
-    use sphere_row_study_cli, only: cli_t, start_program, read_keys, fail, stop_unless_normal
+    use sphere_row_study_cli, only: cli_t, start_program, read_keys, fail, stop_unless_normal, &
+        stop_unless_written, say
     use sphere_row_bisection, only: bisect
     use sphere_row_method_runs, only: scene_at, reference_run, prepare_method
     implicit none
@@ -36,6 +37,8 @@ program c12_methods
     type(method_t), allocatable :: methods(:)
     logical, allocatable :: in_map(:)
     integer :: repeats, points, stat
+    character(len=300) :: msg
+    character(len=40) :: seconds_text
     integer(int64) :: max_steps
     real(qp) :: min_time
     real :: clock_start, clock_end
@@ -65,8 +68,8 @@ program c12_methods
     call lap("smallest distances to e_c")
     call platform()
     call cpu_time(clock_end)
-    write (output_unit, "(a, f0.1, a)") name//": tables written to "//out_dir//"/ in ", &
-        clock_end - clock_start, " s of CPU time"
+    write (seconds_text, "(f0.1)") clock_end - clock_start
+    call say(name//": tables written to "//out_dir//"/ in "//trim(seconds_text)//" s of CPU time")
 
 contains
 
@@ -142,19 +145,19 @@ contains
         type(scene_t) :: scene
         real(qp) :: seconds, err
         integer :: s, m, unit, unit_cost, runs, batches
-        open (newunit=unit, file=out_dir//"/methods_work_precision.tsv", status="replace", &
-            action="write")
-        open (newunit=unit_cost, file=out_dir//"/methods_costs.tsv", status="replace", &
-            action="write")
-        write (unit, "(a)") "scene"//tab//"e[1]"//tab//"e_minus_ec[1]"//tab//"label"//tab &
-            //"method"//tab &
+        call open_table(out_dir, "methods_work_precision.tsv", "scene"//tab//"e[1]"//tab &
+            //"e_minus_ec[1]"//tab//"label"//tab//"method"//tab &
             //"kind"//tab//"setting[1|L/V]"//tab//"cpu_per_run[s]"//tab//"batches"//tab &
             //"runs_per_batch"//tab//"collisions"//tab//"collisions_ref"//tab//"same_count" &
             //tab//"same_sequence"//tab//"matched"//tab//"v_error[V]"//tab//"t_error[L/V]" &
-            //tab//"error[1]"//tab//"min_gap[L]"//tab//"steps"//tab//"status"//tab//"category"
-        write (unit_cost, "(a)") "e[1]"//tab//"label"//tab//"method"//tab//"kind"//tab &
-            //"setting[1|L/V]"//tab//"collisions_ref"//tab//"collisions"//tab &
-            //"ns_per_run[ns]"//tab//"ns_per_collision[ns]"//tab//"category"
+            //tab//"error[1]"//tab//"min_gap[L]"//tab//"steps"//tab//"status"//tab//"category", &
+            unit, stat, msg)
+        call stop_unless_normal(stat, msg)
+        call open_table(out_dir, "methods_costs.tsv", "e[1]"//tab//"label"//tab//"method"//tab &
+            //"kind"//tab//"setting[1|L/V]"//tab//"collisions_ref"//tab//"collisions"//tab &
+            //"ns_per_run[ns]"//tab//"ns_per_collision[ns]"//tab//"category", unit_cost, stat, &
+            msg)
+        call stop_unless_normal(stat, msg)
         do s = 1, size(scenes)
             call scene_at(scenes(s), scene)
             call reference_run(scene, ref)
@@ -187,8 +190,10 @@ contains
                 end if
             end do
         end do
-        close (unit)
-        close (unit_cost)
+        call close_table(unit, stat, msg)
+        call stop_unless_written(stat, msg)
+        call close_table(unit_cost, stat, msg)
+        call stop_unless_written(stat, msg)
     end subroutine work_precision
 
     !> methods_stability.tsv: the category of each method on the map over e,
@@ -222,11 +227,10 @@ contains
             es(n_above + j) = e_crit - 10.0_qp**(lo + (hi - lo)*(j - 1)/(n_below - 1))
         end do
         es(points) = 0.0_qp
-        open (newunit=unit, file=out_dir//"/methods_stability.tsv", status="replace", &
-            action="write")
-        write (unit, "(a)") "row"//tab//"label"//tab//"e[1]"//tab//"e_minus_ec[1]"//tab &
-            //"category_code"//tab//"category"//tab//"collisions"//tab//"collisions_ref"//tab &
-            //"status"//tab//"status_ref"
+        call open_table(out_dir, "methods_stability.tsv", "row"//tab//"label"//tab//"e[1]" &
+            //tab//"e_minus_ec[1]"//tab//"category_code"//tab//"category"//tab//"collisions" &
+            //tab//"collisions_ref"//tab//"status"//tab//"status_ref", unit, stat, msg)
+        call stop_unless_normal(stat, msg)
         allocate (category(size(methods), points), n_run(size(methods), points), &
             status_run(size(methods), points), n_ref(points), status_ref(points))
         ! from e = 0 up: the runs below e_c, the longest, are handed out first
@@ -260,7 +264,8 @@ contains
                     //status_word(status_ref(j))
             end do
         end do
-        close (unit)
+        call close_table(unit, stat, msg)
+        call stop_unless_written(stat, msg)
     end subroutine stability
 
     !> methods_min_distance.tsv: for each precision of the engine (and of the
@@ -287,11 +292,11 @@ contains
             if (ref%status /= status_normal) exit
             ref_limit = k
         end do
-        open (newunit=unit, file=out_dir//"/methods_min_distance.tsv", status="replace", &
-            action="write")
-        write (unit, "(a)") "label"//tab//"method"//tab//"kind"//tab//"epsilon[1]"//tab &
-            //"min_distance_decade[1]"//tab//"collisions_there"//tab &
-            //"min_distance_bisected[1]"//tab//"reference_limit[1]"
+        call open_table(out_dir, "methods_min_distance.tsv", "label"//tab//"method"//tab &
+            //"kind"//tab//"epsilon[1]"//tab//"min_distance_decade[1]"//tab &
+            //"collisions_there"//tab//"min_distance_bisected[1]"//tab//"reference_limit[1]", &
+            unit, stat, msg)
+        call stop_unless_normal(stat, msg)
         allocate (right_log(size(chosen)), k_right(size(chosen)), n_right(size(chosen)), &
             reliable(size(chosen)))
         ! each method searched on a thread of its own (OpenMP), the rows
@@ -322,7 +327,8 @@ contains
                 //str(merge(10.0_qp**right_log(m), nan, k_right(m) > 0 .and. reliable(m))) &
                 //tab//str(10.0_qp**(-ref_limit))
         end do
-        close (unit)
+        call close_table(unit, stat, msg)
+        call stop_unless_written(stat, msg)
     end subroutine min_distance
 
     !> Whether the method `tested` misses the reference's collision sequence
@@ -355,18 +361,19 @@ contains
         character(len=*), intent(in) :: part
         real, save :: last = -1.0e0
         real :: now
+        character(len=40) :: seconds
         if (last < 0.0e0) last = clock_start
         call cpu_time(now)
-        write (output_unit, "(a, f0.2, a)") name//": "//part//": ", now - last, " s"
+        write (seconds, "(f0.2)") now - last
+        call say(name//": "//part//": "//trim(seconds)//" s")
         last = now
     end subroutine lap
 
     !> methods_platform.tsv: where and how the times were taken.
     subroutine platform()
         integer :: unit
-        open (newunit=unit, file=out_dir//"/methods_platform.tsv", status="replace", &
-            action="write")
-        write (unit, "(a)") "item"//tab//"value"
+        call open_table(out_dir, "methods_platform.tsv", "item"//tab//"value", unit, stat, msg)
+        call stop_unless_normal(stat, msg)
         write (unit, "(a)") "cpu_model"//tab//cpu_model()
         write (unit, "(a)") "compiler_version"//tab//compiler_version()
         write (unit, "(a)") "compiler_options"//tab//compiler_options()
@@ -374,7 +381,8 @@ contains
         write (unit, "(a)") "batches"//tab//itoa(repeats)
         write (unit, "(a)") "min_time[s]"//tab//str(real(min_time, dp))
         write (unit, "(a)") "stepping_max_steps"//tab//itoa(max_steps)
-        close (unit)
+        call close_table(unit, stat, msg)
+        call stop_unless_written(stat, msg)
     end subroutine platform
 
 end program c12_methods

@@ -4,11 +4,11 @@
 !> hand-written real(16) loop of sphere_row_minimal, one thread, no
 !> statistics beyond the mean; prints the mean and the time.
 program c12_minimal_loop
-    use, intrinsic :: iso_fortran_env, only: output_unit, int64
+    use, intrinsic :: iso_fortran_env, only: int64
     use sphere_row, only: dp, qp, real_str, itoa
     use sphere_row_monte_carlo, only: normal_sampler_t, mc_block_size, mc_block_seed
     use sphere_row_minimal, only: minimal_v4
-    use sphere_row_study_cli, only: cli_t, start_program, read_keys
+    use sphere_row_study_cli, only: cli_t, start_program, read_keys, say
     implicit none
     character(len=*), parameter :: nl = new_line("a")
     !> The definition's law of e.
@@ -44,6 +44,6 @@ program c12_minimal_loop
     call sampler%release()
     total = sum(v4)
     call system_clock(c1)
-    write (output_unit, "(a)") "c12-minimal-loop: "//itoa(n)//" runs, mean v4 " &
-        //real_str(real(total/n, qp), 17)//", "//real_str(real(c1 - c0, qp)/rate, 4)//" s"
+    call say("c12-minimal-loop: "//itoa(n)//" runs, mean v4 " &
+        //real_str(real(total/n, qp), 17)//", "//real_str(real(c1 - c0, qp)/rate, 4)//" s")
 end program c12_minimal_loop

@@ -12,8 +12,8 @@ module sphere_row_c2_tables
         sorted_quantile, cubic_law_applies, cubic_law_mean, cubic_law_sd, &
         cubic_law_quantile, cubic_law_cdf, cubic_law_density, cubic_law_v4, single_impact_bound, &
         cubic_law_ks_distance
-    use sphere_row_tables, only: tab, row_t, write_rows
-    use sphere_row_error, only: error_t, fatal_error, error_io
+    use sphere_row_tables, only: tab, row_t, write_rows, open_table, close_table, discard_tables
+    use sphere_row_error, only: error_t, fatal_error, error_io, error_output
     implicit none
     private
     public :: c2_sample_t, c2_statistics, c2_write_tables
@@ -235,7 +235,8 @@ contains
         type(c2_sample_t), intent(inout) :: c
         character(len=*), intent(in) :: out
         type(error_t), allocatable, intent(out) :: error
-        integer :: units(4), ios, i, k, exitstat, cmdstat
+        integer :: units(4), ios, k, exitstat, cmdstat
+        character(len=300) :: msg
         logical :: there
         character(len=*), parameter :: names(4) = [character(len=20) :: &
             "c2_answers.tsv", "c2_ecdf.tsv", "c2_histogram.tsv", "c2_convergence.tsv"]
@@ -251,14 +252,10 @@ contains
         end if
         units = -1
         do k = 1, size(names)
-            open (newunit=units(k), file=out//"/"//trim(names(k)), status="replace", &
-                action="write", iostat=ios)
-            if (ios /= 0) then
-                do i = 1, k - 1
-                    close (units(i), status="delete")
-                end do
-                call fatal_error(error, "out = '"//out//"': "//trim(names(k)) &
-                    //" cannot be written", error_io)
+            call open_table(out, trim(names(k)), "", units(k), ios, msg)
+            if (ios /= status_normal) then
+                call discard_tables()
+                call fatal_error(error, trim(msg), error_io)
                 return
             end if
         end do
@@ -267,7 +264,12 @@ contains
         call write_histogram(c, units(3))
         call write_convergence(c, units(4))
         do k = 1, size(units)
-            close (units(k))
+            call close_table(units(k), ios, msg)
+            if (ios /= status_normal) then
+                call discard_tables()
+                call fatal_error(error, trim(msg), error_output)
+                return
+            end if
         end do
     end subroutine c2_write_tables
 

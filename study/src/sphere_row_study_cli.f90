@@ -18,11 +18,14 @@ module sphere_row_study_cli
     use sphere_row, only: scene_t, status_normal
     use sphere_row_cli, only: cli_t, read_command_line, fail_with => fail
     use sphere_row_scene_keys, only: scene_from_cli, add_scene_keys
-    use sphere_row_error, only: error_t, fatal_error
+    use sphere_row_error, only: error_t, fatal_error, error_output
+    use sphere_row_tables, only: discard_tables
+    use sphere_row_system, only: text_out_t
     implicit none
     private
-    public :: cli_t, add_scene_keys, start_program, read_keys, fail, stop_unless_normal
-    public :: add_precision_key, precision_is_auto
+    public :: cli_t, add_scene_keys, start_program, read_keys, fail, stop_unless_normal, &
+        stop_unless_written
+    public :: add_precision_key, precision_is_auto, say
 
     !> The running program's name, the prefix of its messages.
     character(len=:), allocatable :: program_name
@@ -41,18 +44,15 @@ contains
     !> made in the precision they need: auto (the default) or qp.
     pure subroutine add_precision_key(cli)
         type(cli_t), intent(inout) :: cli
-        call cli%add_word("precision", "auto", "auto: real(8) where a rounding certificate" &
-            //" holds, else real(16); qp: real(16) for every run")
+        call cli%add_choice("precision", "auto", [character(len=4) :: "auto", "qp"], "auto: " &
+            //"real(8) where a rounding certificate holds, else real(16); qp: real(16) for " &
+            //"every run")
     end subroutine add_precision_key
 
-    !> True for precision = auto, false for qp; anything else fails.
+    !> True for precision = auto, false for qp (the registry took no other).
     logical function precision_is_auto(cli) result(auto)
         type(cli_t), intent(in) :: cli
-        character(len=:), allocatable :: word
-        word = cli%get_word("precision")
-        if (word /= "auto" .and. word /= "qp") call fail("precision = "//word// &
-            ": allowed auto or qp")
-        auto = word == "auto"
+        auto = cli%get_word("precision") == "auto"
     end function precision_is_auto
 
     !> Start the command line of program `name`: `about` is the paragraph of
@@ -103,12 +103,26 @@ contains
         call fail_error(error)
     end subroutine fail_text
 
-    !> One line on stderr, `program: message`, and exit status 2.
+    !> One line on stderr, `program: message`, and exit status 2 (1 if the
+    !> program's output could not be written); no table being written is
+    !> left behind.
     subroutine fail_error(error)
         type(error_t), intent(in) :: error
         if (.not. allocated(program_name)) program_name = "c12"
+        call discard_tables()
         call fail_with(program_name, error)
     end subroutine fail_error
+
+    !> One line on stdout (a program's report of what it did), written at
+    !> once and checked: a line that cannot be written fails the program.
+    subroutine say(line)
+        character(len=*), intent(in) :: line
+        type(text_out_t) :: out
+        type(error_t), allocatable :: error
+        call out%put(line)
+        call out%finish(error)
+        if (allocated(error)) call fail_error(error)
+    end subroutine say
 
     !> fail(msg) unless `stat` is status_normal.
     subroutine stop_unless_normal(stat, msg)
@@ -116,5 +130,16 @@ contains
         character(len=*), intent(in) :: msg
         if (stat /= status_normal) call fail_text(msg)
     end subroutine stop_unless_normal
+
+    !> Fail with exit status 1 unless `stat` is status_normal: for a table
+    !> that could not be written (close_table), not for bad input.
+    subroutine stop_unless_written(stat, msg)
+        integer, intent(in) :: stat
+        character(len=*), intent(in) :: msg
+        type(error_t), allocatable :: error
+        if (stat == status_normal) return
+        call fatal_error(error, trim(msg), error_output)
+        call fail_error(error)
+    end subroutine stop_unless_written
 
 end module sphere_row_study_cli

@@ -1,12 +1,20 @@
 !> Output of the study programs: TSV tables with one header row, and the
 !> per-task answer tables that results/answers.tsv and the summary are made of.
+!>
+!> A table is written under a temporary name (`name.tmp` beside it) and
+!> renamed when it is complete: a program that fails, or a disk that fills,
+!> leaves the previous table or none, never a partial one. gfortran's run-time
+!> library does not report a write that fails, so `close_table` compares the
+!> bytes written with the size of the file on disk.
 module sphere_row_tables
     use, intrinsic :: iso_fortran_env, only: int64
     use sphere_row, only: qp, status_normal, status_invalid, real_text, int_text, &
         number_text_length, status_text, status_word_length
+    use sphere_row_system, only: rename_file, remove_file, system_error_text
     implicit none
     private
-    public :: open_table, write_answer, answer_header, tab, split_tabs, cpu_model, yes_no
+    public :: open_table, close_table, discard_tables, write_answer, answer_header, tab, &
+        split_tabs, cpu_model, yes_no
     public :: row_t, write_rows
 
     !> The field separator.
@@ -15,6 +23,15 @@ module sphere_row_tables
     !> cross-check of it (a closed form, another method) and how both were made.
     character(len=*), parameter :: answer_header = "key"//tab//"value"//tab//"check"//tab &
         //"check_value"//tab//"difference"//tab//"how"
+
+    !> A table being written: its unit and the name it gets when complete.
+    type :: open_table_t
+        integer :: unit = -1
+        character(len=:), allocatable :: dir, name
+    end type open_table_t
+
+    !> The tables open now.
+    type(open_table_t), allocatable :: open_tables(:)
 
     !> One row of a table, built field by field (tab-separated) where OpenMP
     !> threads build rows at once: numbers and words are written into
@@ -125,9 +142,10 @@ contains
     end subroutine write_rows
 
     !> Create directory `dir` if needed and open `dir/name` for writing, with
-    !> `header` as its first line. `stat` is status_invalid (and `msg` says
-    !> why) if that is impossible. The shell that makes the directory is
-    !> started only where it is missing (a shell costs milliseconds).
+    !> `header` as its first line (none if it is ""); the table is `dir/name.tmp` until
+    !> close_table. `stat` is status_invalid (and `msg` says why) if that is
+    !> impossible. The shell that makes the directory is started only where
+    !> it is missing (a shell costs milliseconds).
     subroutine open_table(dir, name, header, unit, stat, msg)
         character(len=*), intent(in) :: dir, name, header
         integer, intent(out) :: unit, stat
@@ -138,16 +156,95 @@ contains
         inquire (file=dir//"/.", exist=there)
         if (.not. there) call execute_command_line("mkdir -p '"//dir//"'", exitstat=ios)
         stat = status_invalid
-        open (newunit=unit, file=dir//"/"//name, status="replace", action="write", &
-            iostat=ios, iomsg=iomsg)
+        open (newunit=unit, file=dir//"/"//name//".tmp", status="replace", action="write", &
+            access="stream", form="formatted", iostat=ios, iomsg=iomsg)
         if (ios /= 0) then
             msg = "out = "//dir//": cannot write "//name//" ("//trim(iomsg)//")"
             return
         end if
-        write (unit, "(a)") header
+        if (.not. allocated(open_tables)) allocate (open_tables(0))
+        open_tables = [open_tables, open_table_t(unit, dir, name)]
+        if (len(header) > 0) write (unit, "(a)") header
         stat = status_normal
         msg = ""
     end subroutine open_table
+
+    !> Close a table that open_table opened and give it its name; `stat` is
+    !> status_invalid (and `msg` says why) if any write did not reach the
+    !> disk, and then the table is removed.
+    subroutine close_table(unit, stat, msg)
+        integer, intent(in) :: unit
+        integer, intent(out) :: stat
+        character(len=*), intent(out) :: msg
+        integer :: k, ios, errno
+        integer(int64) :: pos, bytes
+        character(len=:), allocatable :: path
+        stat = status_invalid
+        k = table_index(unit)
+        if (k == 0) then
+            msg = "close_table: unit "//int_str(unit)//" is not a table of open_table"
+            return
+        end if
+        path = open_tables(k)%dir//"/"//open_tables(k)%name
+        inquire (unit=unit, pos=pos)
+        close (unit, iostat=ios)
+        inquire (file=path//".tmp", size=bytes)
+        open_tables = [open_tables(:k - 1), open_tables(k + 1:)]
+        if (ios /= 0 .or. bytes /= pos - 1) then
+            errno = remove_file(path//".tmp")
+            msg = "out = "//path//": cannot be written (only "//int_str(bytes)//" of " &
+                //int_str(pos - 1)//" bytes reached the disk); allowed a directory with room"
+            return
+        end if
+        errno = rename_file(path//".tmp", path)
+        if (errno /= 0) then
+            msg = "out = "//path//": cannot be written ("//system_error_text(errno) &
+                //"); allowed a writable directory"
+            errno = remove_file(path//".tmp")
+            return
+        end if
+        stat = status_normal
+        msg = ""
+    end subroutine close_table
+
+    !> Close and remove every table still being written (a program that
+    !> stops on an error leaves none behind).
+    subroutine discard_tables()
+        integer :: k, ios, errno
+        if (.not. allocated(open_tables)) return
+        do k = 1, size(open_tables)
+            close (open_tables(k)%unit, status="delete", iostat=ios)
+            if (ios /= 0) errno = remove_file(open_tables(k)%dir//"/"//open_tables(k)%name//".tmp")
+        end do
+        deallocate (open_tables)
+    end subroutine discard_tables
+
+    integer function table_index(unit)
+        integer, intent(in) :: unit
+        integer :: k
+        table_index = 0
+        if (.not. allocated(open_tables)) return
+        do k = 1, size(open_tables)
+            if (open_tables(k)%unit == unit) table_index = k
+        end do
+    end function table_index
+
+    function int_str(i) result(text)
+        class(*), intent(in) :: i
+        character(len=:), allocatable :: text
+        character(len=number_text_length) :: buf
+        integer :: length
+        select type (i)
+        type is (integer)
+            call int_text(int(i, int64), buf, length)
+        type is (integer(int64))
+            call int_text(i, buf, length)
+        class default
+            buf = "?"
+            length = 1
+        end select
+        text = buf(:length)
+    end function int_str
 
     !> One row of an answer table; numbers come already as text with all
     !> their digits, '-' where there is no cross-check.

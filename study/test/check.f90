@@ -8,6 +8,7 @@ program check
     use test_lean, only: collect_lean
     use test_auto, only: collect_auto
     use test_ranks, only: collect_ranks
+    use test_tables, only: collect_tables
     implicit none
     integer :: passed, failed
     passed = 0
@@ -20,6 +21,7 @@ program check
     call run_tests("lean", collect_lean(), passed, failed)
     call run_tests("auto", collect_auto(), passed, failed)
     call run_tests("ranks", collect_ranks(), passed, failed)
+    call run_tests("tables", collect_tables(), passed, failed)
     print "(i0, ' passed, ', i0, ' failed')", passed, failed
     if (failed > 0) stop 1, quiet=.true.
 end program check
