@@ -5,6 +5,8 @@
 #   make test-long       the same tests in their deep versions (more cases, longer runs)
 #   make test-times      make test, then build/test-times.tsv: every test's wall time
 #   make mutants         the mutation check: small bugs, each in a copy, must fail make test
+#   make differential    REV=... ARGS="n=2000": the same random rows by a revision and by
+#                        the working tree; every finite run must be the same, bit for bit
 #   make study           every task's tables, figures and results/summary.md
 #   make bench           speed: the cost study (cost.tsv, its figure) and bench.tsv
 #   make check-results   regenerate the study elsewhere and compare with results/
@@ -98,7 +100,7 @@ PNG := $(FIGURES:%=$(RESULTS)/%.png) $(RESULTS)/methods_work_precision.png \
 SVG := $(FIGURES:%=$(RESULTS)/%.svg) $(RESULTS)/methods_work_precision.svg \
        $(RESULTS)/methods_stability.svg
 
-.PHONY: all help prereqs test test-long test-times mutants test-mpi check-layers study tables \
+.PHONY: all help prereqs test test-long test-times mutants differential test-mpi check-layers study tables \
         figures bench callgrind check-results docs lint clean fuzz
 
 all: study
@@ -123,6 +125,9 @@ test: prereqs check-layers $(INC_STAMP) ## run both packages' tests; last line: 
 	awk '/^[0-9]+ passed, [0-9]+ failed$$/ { p += $$1; f += $$3; n++ } \
 		END { f += 2 - n; printf "%d passed, %d failed\n", p, f; exit f > 0 }' \
 		build/test-engine.log build/test-study.log && exit $$status
+
+differential: prereqs ## the same random rows by REV (default HEAD) and the working tree
+	bash tools/differential $(or $(REV),HEAD) $(ARGS)
 
 mutants: prereqs ## the mutation check (tools/mutants): each small bug must fail make test
 	python3 tools/mutants
