@@ -34,8 +34,8 @@ BUILD_STAMP := build/.release-stamp
 INC_STAMP := build/.inc-stamp
 BIN := build/release/bin
 # the engine (root package) and the study package that uses it
-SOURCES := $(wildcard include/*.h src/*.f90 src/*.c src/*.inc study/src/*.f90 study/src/*.inc \
-           study/app/*.f90) fpm.toml study/fpm.toml
+SOURCES := $(wildcard include/*.h src/*.f90 src/*/*.f90 src/*/*.inc src/*/*.c study/src/*.f90 \
+           study/src/*.inc study/app/*.f90) fpm.toml study/fpm.toml
 
 # NO_XDP=1 builds without the 80-bit extended kind, as a compiler without
 # real(10) does (aarch64): `make test NO_XDP=1` tests that build
@@ -159,30 +159,29 @@ bench: prereqs ## speed: cost per collision against p (cost.tsv, cost.png) and b
 callgrind: $(BUILD_STAMP) ## quad operations per collision of c2's lean path (valgrind)
 	bash tools/callgrind-quad-ops $(BIN) $(RESULTS)
 
-# The layers: the core below the umbrella module (kinds, status, format, the
-# per-kind engine) never imports it; everything above it (CLI, study, tests)
-# never imports a per-kind engine module but the umbrella's names; the root
-# package links no GSL.
-CORE := src/sphere_row_kinds.f90 src/sphere_row_status.f90 src/sphere_row_format.f90 \
-        src/sphere_row_cascade.f90 src/sphere_row_pattern.inc $(wildcard src/sphere_row_pattern_*.f90) \
-        src/sphere_row_engine.inc $(wildcard src/sphere_row_engine_*.f90) \
-        src/sphere_row_auto.f90
-ABOVE := $(filter-out src/sphere_row.f90 $(CORE),$(wildcard src/*.f90 app/*.f90 test/*.f90 \
-         study/*/*.f90 study/*/*.inc))
+# The layers: the core below the umbrella module (src/core: kinds, status,
+# format, the policy; src/engine: the per-kind engine; src/collapse: its
+# rules) never imports it; everything above it (src/cli, the CLI, study,
+# tests) never imports a per-kind engine module but the umbrella's names; the
+# root package links no GSL.
+CORE := $(wildcard src/core/*.f90 src/engine/*.f90 src/engine/*.inc src/collapse/*.f90 \
+        src/collapse/*.inc)
+ABOVE := $(wildcard src/cli/*.f90 app/*.f90 test/*.f90 study/*/*.f90 study/*/*.inc)
 check-layers: ## check the layer rules (umbrella imports, per-kind imports, GSL)
 	@! grep -nE '^ *use +sphere_row *(,|$$)' $(CORE) || { echo "the core imports the umbrella"; exit 1; }
 	@! grep -nE '^ *use +sphere_row_engine_' $(ABOVE) || { echo "a per-kind engine module used above the umbrella"; exit 1; }
 	@! grep -niE '^ *link *=.*gsl' fpm.toml || { echo "the root package links GSL"; exit 1; }
 
-# fpm does not see edits of an included template (src/*.inc, study/src/*.inc):
+# fpm does not see edits of an included template (src/*/*.inc, study/src/*.inc):
 # drop the objects of every source that includes one, in both packages' build
-# trees of either compiler (gfortran, or mpifort for MPI=1; in the study's, the
-# root's sources are named .._src_*), and the linked
+# trees of either compiler (gfortran, or mpifort for MPI=1; fpm names an
+# object after its path, src/engine/x.f90 -> src_engine_x.f90.o, and in the
+# study's tree the root's sources with a leading .._), and the linked
 # programs, which fpm does not relink on its own, so that fpm builds them again.
-$(INC_STAMP): $(wildcard src/*.inc study/src/*.inc)
+$(INC_STAMP): $(wildcard src/*/*.inc study/src/*.inc)
 	@mkdir -p build
-	for f in $$(grep -l '^ *include "' src/*.f90 study/src/*.f90); do \
-		rm -f {,study/}build/{gfortran,mpifort}_*/*/{,.._}src_$$(basename $$f).o*; done
+	for f in $$(grep -rl --include='*.f90' '^ *include "' src study/src); do \
+		rm -f {,study/}build/{gfortran,mpifort}_*/*/{,.._}$$(echo $$f | tr / _).o*; done
 	rm -f {,study/}build/{gfortran,mpifort}_*/{app,test}/*
 	@touch $@
 

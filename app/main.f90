@@ -98,7 +98,7 @@ contains
         if (precision == "dp") kind_name = "real(8)"
         length_key = "d"
         if (maxval(scene%a) > scene%d) length_key = merge("gaps", "a   ", cli%given("gaps"))
-        if (run%status == status_invalid .or. .not. finite([run%t_end, run%collapse_t])) then
+        if (run%status == status_invalid .or. .not. finite([run%t_end, run%limits%t])) then
             call refuse_time(kind_name, error)
             if (.not. allocated(error) .and. run%status == status_invalid) then
                 call fatal_error(error, trim(run%message))
@@ -138,7 +138,7 @@ contains
         unit_speed%v0 = 1.0_qp
         call run_scene(unit_speed, check)
         if (check%status == status_invalid) return
-        t1 = max(check%t_end, check%collapse_t)
+        t1 = max(check%t_end, check%limits%t)
         if (.not. finite([t1])) return
         big = huge(1.0_qp)
         if (precision == "dp") big = real(huge(1.0_dp), qp)
@@ -166,12 +166,12 @@ contains
         else
             call out%put("precision "//precision)
         end if
-        if (run%collapses > 0) then
-            call out%put("collapses "//itoa(run%collapses))
-            call out%put("closed_form_limits "//itoa(run%closed_limits))
-            call out%put("collapse_spheres "//itoa(run%collapse_first)//"-" &
-                //itoa(run%collapse_last))
-            call out%put("collapse_t "//str(run%collapse_t))
+        if (run%limits%n > 0) then
+            call out%put("collapses "//itoa(run%limits%n))
+            call out%put("closed_form_limits "//itoa(run%limits%closed_form))
+            call out%put("collapse_spheres "//itoa(run%limits%first)//"-" &
+                //itoa(run%limits%last))
+            call out%put("collapse_t "//str(run%limits%t))
         end if
         call write_numbered("v", run%v)
         call write_numbered("x", run%x)

@@ -65,7 +65,7 @@ contains
         real(qp) :: v_scale, y_scale
         integer :: n
         n = both%scan%n
-        call check(error, both%cal%calendar .and. .not. both%scan%calendar, &
+        call check(error, both%cal%cal%on .and. .not. both%scan%cal%on, &
             "calendar not chosen as asked")
         if (allocated(error)) return
         call check(error, both%cal%n == n .and. both%cal%status == both%scan%status, &
@@ -153,7 +153,7 @@ contains
         character(len=200) :: msg
         call scene_init(scene, stat, msg, p=p, e=1.0_qp)
         call simulate(scene, run)
-        call check(error, run%calendar .and. run%status == status_normal .and. run%n == p - 1, &
+        call check(error, run%cal%on .and. run%status == status_normal .and. run%n == p - 1, &
             "elastic row: calendar, status normal and p - 1 collisions")
         if (allocated(error)) return
         call check(error, run%v(p) == 1.0_qp .and. all(run%v(:p - 1) == 0.0_qp), &
@@ -195,12 +195,12 @@ contains
         call scene_init(scene, stat, msg, p=4, e=0.172_qp, tol=1.0e-100_qp)
         scene%calendar_from = always
         call simulate(scene, run)
-        call check(error, .not. run%calendar .and. run%n == 115, &
+        call check(error, .not. run%cal%on .and. run%n == 115, &
             "tiny tol: the scan runs, 115 collisions at e = 0.172")
         if (allocated(error)) return
         scene%tol = eps
         call simulate(scene, run)
-        call check(error, run%calendar .and. run%n == 115, &
+        call check(error, run%cal%on .and. run%n == 115, &
             "tol = eps: the calendar runs, 115 collisions at e = 0.172")
     end subroutine test_tiny_tol
 

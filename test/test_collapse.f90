@@ -45,7 +45,7 @@ contains
             scene%closed_form_limits = .false.
             scene%tol = 1.0e-60_qp
             call simulate(scene, stepped)
-            call check(error, cycle%status == status_collapsed .and. cycle%closed_limits >= 1 &
+            call check(error, cycle%status == status_collapsed .and. cycle%limits%closed_form >= 1 &
                 .and. stepped%status == status_collapsed, "cycle time, scene "//itoa(i) &
                 //": not a closed-form limit and a stepped collapse")
             call check(error, abs(cycle%t_end - stepped%t_end) <= 1.0e-12_qp, &
@@ -188,7 +188,7 @@ contains
         end do
         call scene_init(scene, stat, msg, e=e_crit_4 - 1.0e-3_qp, tol=1.0e-4000_qp)
         call simulate(scene, with)
-        call check(error, with%status == status_collapsed .and. with%closed_limits >= 1 .and. &
+        call check(error, with%status == status_collapsed .and. with%limits%closed_form >= 1 .and. &
             all(abs(with%v - 0.25_qp) <= 64*eps), "just below e_crit: no cycle limit")
     end subroutine test_near_critical
 
@@ -202,11 +202,11 @@ contains
         character(len=200) :: msg
         call scene_init(scene, stat, msg, p=3, e=e_crit_3 - 1.0e-4_qp, tol=1.0e-4000_qp)
         call simulate(scene, run)
-        call check(error, run%status == status_collapsed .and. run%closed_limits == 1 .and. &
+        call check(error, run%status == status_collapsed .and. run%limits%closed_form == 1 .and. &
             all(abs(run%v - 1/3.0_qp) <= 64*eps), "p = 3 below e_crit: no cycle limit")
         call scene_init(scene, stat, msg, p=3, e=e_crit_3 + 1.0e-4_qp, tol=1.0e-4000_qp)
         call simulate(scene, run)
-        call check(error, run%status == status_normal .and. run%collapses == 0, &
+        call check(error, run%status == status_normal .and. run%limits%n == 0, &
             "p = 3 above e_crit: not finite")
     end subroutine test_three_spheres
 
@@ -266,7 +266,7 @@ contains
                     "a finite run changed with closed-form limits")
                 if (allocated(error)) return
             end if
-            if (with%closed_limits > 0) limited = limited + 1
+            if (with%limits%closed_form > 0) limited = limited + 1
             if (with%status == status_max_collisions) cycle
             v0 = 0.0_qp
             v0(1) = 1.0_qp
@@ -310,7 +310,7 @@ contains
             call simulate(scene, fast)
             scene%closed_form_limits = .false.
             call simulate(scene, slow)
-            if (slow%status == status_max_collisions .or. fast%closed_limits == 0) cycle
+            if (slow%status == status_max_collisions .or. fast%limits%closed_form == 0) cycle
             compared = compared + 1
             ! (a run that the fallback ends `normal`, its last rates within tol
             ! of 0 but converging to one velocity, may end collapsed here)
@@ -344,7 +344,7 @@ contains
         scene%max_collisions = 2000000
         call simulate(scene, slow)
         call check(error, fast%status == status_collapsed .and. fast%n < 5000 .and. &
-            fast%closed_limits >= 1, "light between heavy: no closed-form limit within 5000")
+            fast%limits%closed_form >= 1, "light between heavy: no closed-form limit within 5000")
         if (allocated(error)) return
         call check(error, slow%status == status_collapsed .and. slow%n > 100000, &
             "light between heavy: the fallback alone no longer needs a long run")
@@ -694,8 +694,8 @@ contains
             call check(error, run%status == status_collapsed .and. run%n < most, &
                 what//": no collapse within "//trim(most_text)//" collisions")
             if (allocated(error)) return
-            call check(error, run%collapses > 0 .and. &
-                (run%closed_limits == run%collapses .or. .not. closed_only), &
+            call check(error, run%limits%n > 0 .and. &
+                (run%limits%closed_form == run%limits%n .or. .not. closed_only), &
                 what//": a limit not taken in closed form")
             if (allocated(error)) return
             if (merged) then
@@ -742,7 +742,7 @@ contains
                 "quiet cascade ("//trim(ways(way))//"): no collapse within 5000 collisions")
             if (allocated(error)) return
             ! a limit that is the fallback's, not a closed form
-            call check(error, fast%collapses > fast%closed_limits, &
+            call check(error, fast%limits%n > fast%limits%closed_form, &
                 "quiet cascade ("//trim(ways(way))//"): no limit taken by the fallback's rule")
             if (allocated(error)) return
             call check(error, slow%status == status_collapsed .and. slow%n > 2*fast%n, &

@@ -276,13 +276,13 @@ contains
         character(len=200) :: msg
         call scene_init(scene, stat, msg, e=0.1_qp)
         call simulate(scene, run)
-        call check(error, run%status == status_collapsed .and. run%collapses >= 1, &
+        call check(error, run%status == status_collapsed .and. run%limits%n >= 1, &
             "e = 0.1 not reported as collapsed")
         call check(error, abs(run%v(4) - 0.25_qp) <= 64*eps, "e = 0.1: v4 /= 1/4")
         scene%e = 0
         call simulate(scene, run)
-        call check(error, run%collapse_first == 1 .and. run%collapse_last == 3 .and. &
-            abs(run%collapse_t - 3) <= 8*eps, "e = 0: first collapse not spheres 1-3 at t = 3")
+        call check(error, run%limits%first == 1 .and. run%limits%last == 3 .and. &
+            abs(run%limits%t - 3) <= 8*eps, "e = 0: first collapse not spheres 1-3 at t = 3")
         call check(error, abs(run%t_end - 6) <= 8*eps, "e = 0: end not at t = 6")
     end subroutine test_collapse_reported
 

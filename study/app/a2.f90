@@ -73,8 +73,8 @@ program c12_a2
         "where the row collapses")
     call write_answer(unit, "a2.plastic.status", status_word(plastic%status), "-", "-", "-", &
         "quasi_plastic: the engine detected inelastic collapse of spheres "// &
-        itoa(plastic%collapse_first)//"-"//itoa(plastic%collapse_last)//" first (t = "// &
-        str(plastic%collapse_t)//"), "//itoa(plastic%collapses)//" collapse limits in all, "// &
+        itoa(plastic%limits%first)//"-"//itoa(plastic%limits%last)//" first (t = "// &
+        str(plastic%limits%t)//"), "//itoa(plastic%limits%n)//" collapse limits in all, "// &
         itoa(plastic%n)//" collisions")
     call write_answer(unit, "a2.plastic.spread", str(spread), "spread_max", str(spread_max), &
         str(spread - spread_max), "(max v - min v)/v0, the measure of 'sufficiently equal'; "// &

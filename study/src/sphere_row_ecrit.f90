@@ -470,13 +470,13 @@ contains
     !> The outcome of a finished real(16) run (one of the outcome_* codes).
     pure integer function outcome_of_qp(run) result(outcome)
         type(run_t), intent(in) :: run
-        outcome = outcome_code(run%collapses, run%closed_limits, run%status)
+        outcome = outcome_code(run%limits%n, run%limits%closed_form, run%status)
     end function outcome_of_qp
 
     !> The outcome of a finished real64 run.
     pure integer function outcome_of_dp(run) result(outcome)
         type(run_dp_t), intent(in) :: run
-        outcome = outcome_code(run%collapses, run%closed_limits, run%status)
+        outcome = outcome_code(run%limits%n, run%limits%closed_form, run%status)
     end function outcome_of_dp
 
     !> A certified cycle limit decides a collapse; a fallback limit alone is

@@ -364,8 +364,9 @@ contains
             further%n == steps .and. further%end == further_going, "block "// &
             itoa(further%first)//"-"//itoa(further%last)//", "//itoa(further%n)//" collisions")
         if (allocated(error)) return
-        call check(error, late%t == early%t .and. late%n == 50 + steps, "the cascade is not "// &
-            "at one instant: t "//str(early%t)//" and "//str(late%t))
+        call check(error, late%clock%t == early%clock%t .and. late%n == 50 + steps, &
+            "the cascade is not "// &
+            "at one instant: t "//str(early%clock%t)//" and "//str(late%clock%t))
         if (allocated(error)) return
         drift = maxval(abs(rates - late%dy))/maxval(abs(late%dy(2:3)))
         allowed = 10*steps*real(epsilon(1.0_dp), qp)
@@ -440,8 +441,8 @@ contains
         call scene_init(row, stat, msg, p=3, e=0.5_qp, gaps=[0.0_qp, 0.0_qp])
         run%y = [0.0_qp, 0.0_qp]
         run%dy = [-1.0_qp, -1.0_qp]
-        run%kick_left = [0.75_qp, 0.75_qp]
-        run%kick_right = [0.75_qp, 0.75_qp]
+        run%ratios%kick_left = [0.75_qp, 0.75_qp]
+        run%ratios%kick_right = [0.75_qp, 0.75_qp]
         call step_further(row, run, 1_int64, further, rates)
         call check(error, further%n == 1 .and. size(rates) == 2, "no collision stepped")
         if (allocated(error)) return

@@ -170,11 +170,11 @@ contains
         run%message = low%message
         run%n = low%n
         run%t_end = real(low%t_end, qp)
-        run%collapses = low%collapses
-        run%closed_limits = low%closed_limits
-        run%collapse_first = low%collapse_first
-        run%collapse_last = low%collapse_last
-        run%collapse_t = real(low%collapse_t, qp)
+        run%limits%n = low%limits%n
+        run%limits%closed_form = low%limits%closed_form
+        run%limits%first = low%limits%first
+        run%limits%last = low%limits%last
+        run%limits%t = real(low%limits%t, qp)
         run%y = real(low%y, qp)
         run%dy = real(low%dy, qp)
         run%x1 = real(low%x1, qp)

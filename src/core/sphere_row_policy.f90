@@ -1,0 +1,96 @@
+!> Every constant of the collapse rules, in one place, each with where it comes
+!> from: derived from the precision or from a bound, measured for speed, or
+!> tuned (and then on what).
+!>
+!> The rules themselves are in src/collapse/; the engine's event loop reads
+!> none of these. Reals are real(16), so that every kind converts them to the
+!> value its own literal would have.
+module sphere_row_policy
+    use sphere_row_kinds, only: qp
+    implicit none
+    private
+    public :: policy_t, policy
+
+    !> The collapse rules' constants.
+    type :: policy_t
+        ! ---- the watch for a repeating pattern (certified cycle) ----
+        !> Longest collision pattern looked for (measured for speed: the watch
+        !> costs O(min(8(p-1), period_max)) a collision).
+        integer :: period_max = 512
+        !> Shortest pattern length looked for and its multiple of p-1: a
+        !> period of the collapse of p spheres involves each contact a few
+        !> times (chosen: 8(p-1), at least 32, certifies p = 5's period-19
+        !> cycle and p = 4's period-8 one).
+        integer :: period_least = 32, period_per_gap = 8
+        !> Whole periods a pattern runs before it is tried (derived: two
+        !> periods after the first show a repeat, not a coincidence).
+        integer :: cycle_repeats = 2
+        !> Periods to wait at least before trying again a cycle that only an
+        !> impact outside its group stood in the way of (chosen).
+        integer :: blocked_wait = 4
+        !> Collisions per gap before patterns are looked for (measured: a
+        !> finite run of a struck row rarely needs more, so finite runs pay
+        !> nothing for the watch).
+        integer :: watch_per_gap = 4
+        !> Periods run ahead on a copy of the group to check a cycle (derived:
+        !> three are needed to see a ratio of changes settle).
+        integer :: cycle_probes = 3
+        !> Power iteration for the period map's dominant eigenvalue: most
+        !> steps, and the steps over which its settling rate is measured
+        !> (chosen: 400 steps settle any ratio |lambda_2/lambda_1| < 0.96 to
+        !> the square root of real(16)'s epsilon).
+        integer :: eigen_iterations = 400, eigen_window = 8
+        !> Largest relative difference between the observed contraction per
+        !> period and the dominant eigenvalue (chosen).
+        real(qp) :: cycle_match = 1.0e-3_qp
+        !> Part of the smallest decision margin that the remaining drift of the
+        !> direction may use up: stands for the unknown sensitivity of a margin
+        !> to the direction (chosen).
+        real(qp) :: drift_safety = 1.0e-2_qp
+        !> The drift that rounding alone produces, in epsilons of the kind
+        !> (derived: a period's operations, rounded).
+        real(qp) :: drift_noise = 1.0e3_qp
+
+        ! ---- the touching block: its proof (box) and its tries ----
+        !> Collisions next to a closed gap before a cascade through touching
+        !> spheres is tried for its limit: at first, and at most after failed
+        !> tries (measured for speed: a finite cascade pays little for the
+        !> tries, doubling from touch_first to touch_most).
+        integer :: touch_first = 8, touch_most = 1024
+        !> Longest run of closed gaps tried (measured for speed: a try costs a
+        !> few passes over the run).
+        integer :: touch_run_most = 2048
+        !> Binary orders of magnitude between neighbouring contacts' reduced
+        !> masses up to which the box uses the engine's order (derived: their
+        !> ratio well inside double's range).
+        integer :: rho_bits = 480
+        !> The box: looks at contacts allowed per contact (measured for speed:
+        !> a try costs O(n)), its first relative margin and the factor by
+        !> which the margins grow on the second attempt (chosen).
+        integer :: box_looks_per_contact = 64
+        real(qp) :: box_widen = 1.0e-3_qp, box_speed_up = 1.2_qp
+        !> The rounding allowed of a box's images, in epsilons of double over
+        !> the box's resolution (derived: an image near S' = delta is good to
+        !> about eps/delta, and e and the weights are rounded to double).
+        real(qp) :: box_slack = 8.0_qp
+        !> Touching blocks whose tries in the engine's order are remembered,
+        !> each waiting before it is tried again (tuned on the collapse survey
+        !> of 1000 random rows).
+        integer :: order_blocks = 4
+        !> Engine collisions to wait, per cascade collision of the last try,
+        !> before the same block is tried again: after a try that found no
+        !> merge, and after one that proved it (tuned on the collapse survey:
+        !> with one wait for every block, a wait of 1/16 after a merge
+        !> answered 773 of 1000 rows, 1/64 793 in 1.2 times the time, 1/256
+        !> 803 in 1.5 times, no wait 814 in 4.6 times).
+        integer :: order_wait_per_step = 16, order_wait_after_merge = 64
+        !> Blocks struck at rest within themselves whose first try's verdict is
+        !> remembered, and the longest run of closed gaps looked at on a
+        !> strike (tuned on the collapse survey).
+        integer :: struck_most = 64, struck_run_most = 16
+    end type policy_t
+
+    !> The policy the engine runs with.
+    type(policy_t), parameter :: policy = policy_t()
+
+end module sphere_row_policy
