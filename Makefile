@@ -8,6 +8,7 @@
 #   make differential    REV=... ARGS="n=2000": the same random rows by a revision and by
 #                        the working tree; every finite run must be the same, bit for bit
 #   make study           every task's tables, figures and results/summary.md
+#   make examples        build and run every example program (example/)
 #   make bench           speed: the cost study (cost.tsv, its figure) and bench.tsv
 #   make check-results   regenerate the study elsewhere and compare with results/
 #   make docs            API documentation (FORD) in build/docs/index.html
@@ -101,7 +102,7 @@ SVG := $(FIGURES:%=$(RESULTS)/%.svg) $(RESULTS)/methods_work_precision.svg \
        $(RESULTS)/methods_stability.svg
 
 .PHONY: all help prereqs test test-long test-times mutants differential test-mpi check-layers study tables \
-        figures bench callgrind check-results docs lint clean fuzz
+        figures bench callgrind check-results docs lint clean fuzz examples
 
 all: study
 
@@ -254,6 +255,21 @@ $(RESULTS)/c2_histogram.png $(RESULTS)/c2_histogram.svg: $(C2)
 $(RESULTS)/c2_convergence.png $(RESULTS)/c2_convergence.svg: $(C2)
 $(RESULTS)/ecrit.png $(RESULTS)/ecrit.svg: $(ECRIT)
 $(RESULTS)/cost.png $(RESULTS)/cost.svg: $(COST)
+
+# the example programs (example/, [[example]] in fpm.toml) as a user of the
+# package runs them. `fpm run --example` without a name runs every example in
+# fpm 0.12, in the order of fpm.toml, goes on past one that fails and exits
+# with that one's status; here each runs on its own under its name, so that a
+# failure says which.
+examples: prereqs ## build and run every example program (example/); fails if one fails
+	@mkdir -p build
+	@$(FPM) run $(TEST_FLAGS) --example --runner echo > build/examples.list \
+		2> build/examples-build.log || { cat build/examples.list build/examples-build.log; exit 1; }
+	@set -o pipefail; ran=0; failed=0; \
+	for bin in $$(grep '/example/' build/examples.list); do \
+		echo "== $$(basename $$bin)"; ran=$$((ran + 1)); \
+		$$bin || { echo "$$(basename $$bin): failed"; failed=$$((failed + 1)); }; done; \
+	echo "examples: $$ran ran, $$failed failed"; [ $$ran -gt 0 ] && [ $$failed -eq 0 ]
 
 # the methods' scripts write both formats in one run
 $(RESULTS)/methods_work_precision.png $(RESULTS)/methods_work_precision.svg &: \
