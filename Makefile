@@ -8,6 +8,9 @@
 #   make differential    REV=... ARGS="n=2000": the same random rows by a revision and by
 #                        the working tree; every finite run must be the same, bit for bit
 #   make study           every task's tables, figures and results/summary.md
+#   make plot            ARGS="p=30 e=0.6": the space-time diagram of any scene, plot.png
+#                        and plot.svg (PLOT=name for another name)
+#   make examples        build and run every example program (example/)
 #   make bench           speed: the cost study (cost.tsv, its figure) and bench.tsv
 #   make check-results   regenerate the study elsewhere and compare with results/
 #   make docs            API documentation (FORD) in build/docs/index.html
@@ -93,15 +96,27 @@ COST := $(RESULTS)/cost.tsv $(RESULTS)/cost_summary.tsv
 TABLES := $(A1) $(A2) $(B1) $(B2) $(C1) $(C2) $(METHODS) $(COLLAPSE) $(ECRIT)
 ANSWERS := $(filter %_answers.tsv,$(TABLES))
 
+# the space-time diagrams (c12-spacetime, study/spacetime.gp): the definition's
+# row, p = 30 at e = 0.6 and a long row; their tables hold a vertex wherever a
+# sphere's velocity changes, megabytes for the longer runs, so they are made in
+# build/spacetime and only the figures go to results/
+SPACETIME := spacetime_p4_e02 spacetime_p30_e06 spacetime_p200_e05
+spacetime_p4_e02_KEYS := p=4 e=0.2
+spacetime_p30_e06_KEYS := p=30 e=0.6
+spacetime_p200_e05_KEYS := p=200 e=0.5
+SPACETIME_DIR := build/spacetime
+SPACETIME_TABLES := $(foreach s,$(SPACETIME),$(foreach t,lines collisions collapses info, \
+                    $(SPACETIME_DIR)/$(s)_$(t).tsv))
+
 FIGURES := a1_paths b1_n b1_critical b2_velocities c1_secant c2_ecdf c2_histogram collapse_by_p \
            c2_convergence ecrit
 PNG := $(FIGURES:%=$(RESULTS)/%.png) $(RESULTS)/methods_work_precision.png \
-       $(RESULTS)/methods_stability.png
+       $(RESULTS)/methods_stability.png $(SPACETIME:%=$(RESULTS)/%.png)
 SVG := $(FIGURES:%=$(RESULTS)/%.svg) $(RESULTS)/methods_work_precision.svg \
-       $(RESULTS)/methods_stability.svg
+       $(RESULTS)/methods_stability.svg $(SPACETIME:%=$(RESULTS)/%.svg)
 
 .PHONY: all help prereqs test test-long test-times mutants differential test-mpi check-layers study tables \
-        figures bench callgrind check-results docs lint clean fuzz
+        figures bench callgrind check-results docs lint clean fuzz plot examples
 
 all: study
 
@@ -253,6 +268,40 @@ $(RESULTS)/c2_histogram.png $(RESULTS)/c2_histogram.svg: $(C2)
 $(RESULTS)/c2_convergence.png $(RESULTS)/c2_convergence.svg: $(C2)
 $(RESULTS)/ecrit.png $(RESULTS)/ecrit.svg: $(ECRIT)
 $(RESULTS)/cost.png $(RESULTS)/cost.svg: $(COST)
+
+# the space-time diagrams: one run of c12-spacetime writes a scene's four
+# tables, the script draws both formats in one run
+.SECONDARY: $(SPACETIME_TABLES)
+$(SPACETIME_DIR)/%_lines.tsv $(SPACETIME_DIR)/%_collisions.tsv $(SPACETIME_DIR)/%_collapses.tsv \
+		$(SPACETIME_DIR)/%_info.tsv: $(BUILD_STAMP)
+	$(BIN)/c12-spacetime out=$(SPACETIME_DIR) name=$* $($*_KEYS)
+$(RESULTS)/spacetime_%.png $(RESULTS)/spacetime_%.svg: study/spacetime.gp \
+		$(foreach t,lines collisions collapses info,$(SPACETIME_DIR)/spacetime_%_$(t).tsv)
+	gnuplot -e "dir='$(SPACETIME_DIR)'; name='spacetime_$*'; out='$(RESULTS)/spacetime_$*'" $<
+
+# the space-time diagram of any scene the scene keys describe, into
+# $(PLOT).png and $(PLOT).svg; its tables in build/plot
+PLOT ?= plot
+plot: prereqs ## space-time diagram of a scene: ARGS="p=30 e=0.6" -> plot.png, plot.svg (PLOT=name)
+	@$(MAKE) --no-print-directory $(BUILD_STAMP)
+	$(BIN)/c12-spacetime out=build/plot name=plot $(ARGS)
+	gnuplot -e "dir='build/plot'; name='plot'; out='$(PLOT)'" study/spacetime.gp
+	@echo "plot: wrote $(PLOT).png and $(PLOT).svg"
+
+# the example programs (example/, [[example]] in fpm.toml) as a user of the
+# package runs them. `fpm run --example` without a name runs every example in
+# fpm 0.12, in the order of fpm.toml, goes on past one that fails and exits
+# with that one's status; here each runs on its own under its name, so that a
+# failure says which.
+examples: prereqs ## build and run every example program (example/); fails if one fails
+	@mkdir -p build
+	@$(FPM) run $(TEST_FLAGS) --example --runner echo > build/examples.list \
+		2> build/examples-build.log || { cat build/examples.list build/examples-build.log; exit 1; }
+	@set -o pipefail; ran=0; failed=0; \
+	for bin in $$(grep '/example/' build/examples.list); do \
+		echo "== $$(basename $$bin)"; ran=$$((ran + 1)); \
+		$$bin || { echo "$$(basename $$bin): failed"; failed=$$((failed + 1)); }; done; \
+	echo "examples: $$ran ran, $$failed failed"; [ $$ran -gt 0 ] && [ $$failed -eq 0 ]
 
 # the methods' scripts write both formats in one run
 $(RESULTS)/methods_work_precision.png $(RESULTS)/methods_work_precision.svg &: \

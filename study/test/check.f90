@@ -9,6 +9,7 @@ program check
     use test_auto, only: collect_auto
     use test_ranks, only: collect_ranks
     use test_tables, only: collect_tables
+    use test_spacetime, only: collect_spacetime
     implicit none
     integer :: passed, failed
     passed = 0
@@ -22,6 +23,7 @@ program check
     call run_tests("auto", collect_auto(), passed, failed)
     call run_tests("ranks", collect_ranks(), passed, failed)
     call run_tests("tables", collect_tables(), passed, failed)
+    call run_tests("spacetime", collect_spacetime(), passed, failed)
     print "(i0, ' passed, ', i0, ' failed')", passed, failed
     if (failed > 0) stop 1, quiet=.true.
 end program check
