@@ -160,9 +160,10 @@ contains
         allocate (character(len=4000) :: lines(max(n - 1, 0)))
         read (unit, "(a)", iostat=ios) buffer
         do i = 1, n - 1
-            read (unit, "(a)", iostat=ios) lines(i)
+            if (ios == 0) read (unit, "(a)", iostat=ios) lines(i)
         end do
         close (unit)
+        if (ios /= 0) call fail("file '"//path//"': cannot be read to its end")
     end subroutine read_lines
 
 end program c12_differential

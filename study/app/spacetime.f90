@@ -50,7 +50,7 @@ program c12_spacetime
 
     call simulate(scene, run)
     if (run%status == status_invalid) call fail(run%message)
-    call check_log_size(scene, run%n, run%collapses, stat, msg)
+    call check_log_size(scene, run%n, run%limits%n, stat, msg)
     call stop_unless_normal(stat, msg)
     call simulate(scene, run, log)
     if (run%status == status_invalid) call fail(run%message)
@@ -67,7 +67,7 @@ program c12_spacetime
     call say("c12-spacetime: "//itoa(diagram%spheres)//" of "//itoa(scene%p) &
         //" world lines (every="//itoa(every)//"), up to t_max = "//short_text(t_max, 6) &
         //": pieces "//itoa(diagram%pieces)//", collisions "//itoa(diagram%collisions) &
-        //", collapse limits "//itoa(diagram%collapses)//"; tables "//out//"/"//name &
+        //", collapse limits "//itoa(diagram%limits%n)//"; tables "//out//"/"//name &
         //"_*.tsv")
 
 end program c12_spacetime

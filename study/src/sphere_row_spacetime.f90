@@ -109,7 +109,7 @@ contains
         text = text//", v0 = "//short_text(scene%v0)
         if (.not. all(scene%m == scene%m(1))) text = text//", masses as given"
         text = text//": "//status_word(run%status)//", "//counted(run%n, "collision")
-        if (run%collapses > 0) text = text//", "//counted(run%collapses, "collapse limit")
+        if (run%limits%n > 0) text = text//", "//counted(run%limits%n, "collapse limit")
 
     contains
 
@@ -215,7 +215,7 @@ contains
                 call row%add(x(hi) + scene%d/2)
                 call row%add(v(lo))
                 write (limits, "(a)") row%text
-                diagram%collapses = diagram%collapses + 1
+                diagram%limits%n = diagram%limits%n + 1
             case default
                 ! the log holds no other kind after its start row
             end select
@@ -284,14 +284,14 @@ contains
         call pair("v0", short_text(scene%v0))
         call pair("status", status_word(run%status))
         call pair("collisions", itoa(run%n))
-        call pair("collapses", itoa(run%collapses))
+        call pair("collapses", itoa(run%limits%n))
         call pair("t_end", short_text(run%t_end))
         call pair("t_max", short_text(diagram%t_max))
         call pair("every", itoa(diagram%every))
         call pair("spheres_drawn", itoa(diagram%spheres))
         call pair("pieces", itoa(diagram%pieces))
         call pair("collisions_drawn", itoa(diagram%collisions))
-        call pair("collapses_drawn", itoa(diagram%collapses))
+        call pair("collapses_drawn", itoa(diagram%limits%n))
     contains
         subroutine pair(key, value)
             character(len=*), intent(in) :: key, value

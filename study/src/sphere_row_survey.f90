@@ -199,8 +199,8 @@ contains
         if (present(rates)) allocate (rates(0))
         call touching_block(scene, run, i1, i2)
         if (i1 == 0) return
-        call cascade_start(cs, real(run%ratios%kick_left(i1:i2), dp), real(run%ratios%kick_right(i1:i2), dp), &
-            real(scene%e, dp), 0, st)
+        call cascade_start(cs, real(run%ratios%kick_left(i1:i2), dp), &
+            real(run%ratios%kick_right(i1:i2), dp), real(scene%e, dp), 0, st)
         if (st /= 0) return
         further%first = i1
         further%last = i2 + 1

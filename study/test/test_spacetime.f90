@@ -106,16 +106,16 @@ contains
         if (allocated(error)) return
         call scene_init(scene, stat, msg, p=4, e=0.1_qp)
         call simulate(scene, run)
-        call check(error, run%status == status_collapsed .and. run%collapse_first == 1 .and. &
-            run%collapse_last == 4, "the scene collapses as 1-4")
+        call check(error, run%status == status_collapsed .and. run%limits%first == 1 .and. &
+            run%limits%last == 4, "the scene collapses as 1-4")
         if (allocated(error)) return
         call check(error, size(limits, 2) == 1, "one collapse limit in the table, found " &
             //itoa(size(limits, 2)))
         if (allocated(error)) return
-        call check(error, abs(limits(1, 1) - run%collapse_t) <= tol .and. &
+        call check(error, abs(limits(1, 1) - run%limits%t) <= tol .and. &
             nint(limits(2, 1)) == 1 .and. nint(limits(3, 1)) == 4, &
             "limit at t = "//str(limits(1, 1))//" of "//itoa(nint(limits(2, 1)))//"-" &
-            //itoa(nint(limits(3, 1)))//"; the run's at "//str(run%collapse_t))
+            //itoa(nint(limits(3, 1)))//"; the run's at "//str(run%limits%t))
         if (allocated(error)) return
         call check(error, abs(limits(5, 1) - limits(4, 1) - 4) <= tol .and. &
             abs(limits(6, 1) - 0.25_qp) <= tol .and. abs(limits(4, 1) - (run%x(1) - 0.5_qp)) &
