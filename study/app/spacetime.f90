@@ -67,7 +67,7 @@ program c12_spacetime
     call say("c12-spacetime: "//itoa(diagram%spheres)//" of "//itoa(scene%p) &
         //" world lines (every="//itoa(every)//"), up to t_max = "//short_text(t_max, 6) &
         //": pieces "//itoa(diagram%pieces)//", collisions "//itoa(diagram%collisions) &
-        //", collapse limits "//itoa(diagram%limits%n)//"; tables "//out//"/"//name &
+        //", collapse limits "//itoa(diagram%collapses)//"; tables "//out//"/"//name &
         //"_*.tsv")
 
 end program c12_spacetime

@@ -215,7 +215,7 @@ contains
                 call row%add(x(hi) + scene%d/2)
                 call row%add(v(lo))
                 write (limits, "(a)") row%text
-                diagram%limits%n = diagram%limits%n + 1
+                diagram%collapses = diagram%collapses + 1
             case default
                 ! the log holds no other kind after its start row
             end select
@@ -291,7 +291,7 @@ contains
         call pair("spheres_drawn", itoa(diagram%spheres))
         call pair("pieces", itoa(diagram%pieces))
         call pair("collisions_drawn", itoa(diagram%collisions))
-        call pair("collapses_drawn", itoa(diagram%limits%n))
+        call pair("collapses_drawn", itoa(diagram%collapses))
     contains
         subroutine pair(key, value)
             character(len=*), intent(in) :: key, value
