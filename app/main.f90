@@ -2,7 +2,8 @@
 program sphere_row_main
     use sphere_row, only: qp, dp, scene_t, run_t, event_log_t, simulate, str, status_word, &
         status_invalid, status_normal, event_collision, event_collapse, itoa, auto_t, &
-        simulate_auto, simulate_in_dp
+        simulate_auto, simulate_in_dp, answer_word, answer_certified, answer_unresolved, &
+        answer_exact, real_str
     use sphere_row_cli, only: cli_t, read_command_line, fail
     use sphere_row_scene_keys, only: add_scene_keys, scene_from_cli, check_scene_in_dp
     use sphere_row_error, only: error_t, fatal_error
@@ -18,7 +19,9 @@ program sphere_row_main
     type(auto_t) :: auto
     type(text_out_t) :: out
     logical :: events
-    character(len=:), allocatable :: precision
+    character(len=:), allocatable :: precision_word
+    !> Significant digits of a real(16) (str's).
+    integer, parameter :: precision_digits = precision(1.0_qp) + 1
 
     call define_keys()
     call read_command_line(cli)
@@ -58,20 +61,20 @@ contains
     !> word); the event table only with qp; with dp, a scene real(8) carries.
     subroutine choose_precision(error)
         type(error_t), allocatable, intent(out) :: error
-        precision = cli%get_word("precision")
-        if (events .and. precision /= "qp") then
-            call fatal_error(error, "events = yes with precision = "//precision &
+        precision_word = cli%get_word("precision")
+        if (events .and. precision_word /= "qp") then
+            call fatal_error(error, "events = yes with precision = "//precision_word &
                 //": allowed only with precision = qp")
             return
         end if
-        if (precision == "dp") call check_scene_in_dp(cli, scene, error)
+        if (precision_word == "dp") call check_scene_in_dp(cli, scene, error)
     end subroutine choose_precision
 
     !> Run `sc` in the precision asked for.
     subroutine run_scene(sc, r)
         type(scene_t), intent(in) :: sc
         type(run_t), intent(inout) :: r
-        select case (precision)
+        select case (precision_word)
         case ("auto")
             call simulate_auto(sc, r, auto)
         case ("dp")
@@ -95,7 +98,7 @@ contains
         integer :: j
         character(len=:), allocatable :: kind_name, length_key
         kind_name = "real(16)"
-        if (precision == "dp") kind_name = "real(8)"
+        if (precision_word == "dp") kind_name = "real(8)"
         length_key = "d"
         if (maxval(scene%a) > scene%d) length_key = merge("gaps", "a   ", cli%given("gaps"))
         if (run%status == status_invalid .or. .not. finite([run%t_end, run%limits%t])) then
@@ -141,7 +144,7 @@ contains
         t1 = max(check%t_end, check%limits%t)
         if (.not. finite([t1])) return
         big = huge(1.0_qp)
-        if (precision == "dp") big = real(huge(1.0_dp), qp)
+        if (precision_word == "dp") big = real(huge(1.0_dp), qp)
         call fatal_error(error, "v0 = "//printable(cli%get_text("v0"))//": the run's " &
             //"times (t_end = "//short_text(t1, 3)//"/v0) overflow "//kind_name &
             //"; allowed v0 >= "//short_text(t1/big, 3, "up"))
@@ -154,29 +157,80 @@ contains
 
     !> The answer, one quantity per line, collected by `out` (whose every
     !> write is checked at its finish).
+    !> The answer: how it ended, how good it is (`answer` and `v_bound`, the
+    !> bound on the final velocities: `rounding` where it is exact or
+    !> certified), the collapse limits by kind, the groups still active if the
+    !> budget ran out, and the velocities (each with the digits its bound
+    !> leaves), positions and gaps.
     subroutine write_run()
+        real(qp) :: bound, separation
+        integer :: j
+        character(len=:), allocatable :: groups
         call out%put("collisions "//itoa(run%n))
         call out%put("t_end "//str(run%t_end))
         call out%put("status "//status_word(run%status))
-        if (precision == "auto") then
+        bound = run%v_bound
+        if (precision_word == "auto") then
             call out%put("precision "//auto%answered)
             call out%put("certified "//trim(merge("yes", "no ", auto%certified)))
-            if (auto%certified) call out%put("v_bound "//str(auto%v_bound))
+            if (auto%certified) bound = max(bound, auto%v_bound)
             if (auto%answered /= "dp") call out%put("not_dp "//auto%why_not_dp)
         else
-            call out%put("precision "//precision)
+            call out%put("precision "//precision_word)
+        end if
+        call out%put("answer "//answer_word(run%answer))
+        if (bound > 0 .or. run%answer > answer_certified) then
+            call out%put("v_bound "//real_str(bound, 2))
+        else
+            call out%put("v_bound rounding")
         end if
         if (run%limits%n > 0) then
             call out%put("collapses "//itoa(run%limits%n))
             call out%put("closed_form_limits "//itoa(run%limits%closed_form))
+            call out%put("limits_exact "//itoa(run%limits%exact))
+            call out%put("limits_certified "//itoa(run%limits%certified))
+            call out%put("limits_bounded "//itoa(run%limits%bounded))
             call out%put("collapse_spheres "//itoa(run%limits%first)//"-" &
                 //itoa(run%limits%last))
             call out%put("collapse_t "//str(run%limits%t))
         end if
-        call write_numbered("v", run%v)
+        if (run%answer == answer_exact .and. run%status == status_normal) then
+            separation = maxval(abs(run%dy))/scene%v0
+            if (separation < sqrt(epsilon(1.0_qp))) call out%put("separation_scale " &
+                //real_str(separation, 2))
+        end if
+        if (run%answer == answer_unresolved) then
+            groups = ""
+            do j = 1, size(run%active, 2)
+                groups = groups//" "//itoa(run%active(1, j))//"-"//itoa(run%active(2, j))
+            end do
+            call out%put("active"//groups)
+        end if
+        call write_velocities(bound)
         call write_numbered("x", run%x)
         call write_numbered("y", run%y)
     end subroutine write_run
+
+    !> Lines `v<i> <v_i>`: every digit of real(16) where the answer is exact or
+    !> certified (bound 0), else the digits down to the bound's leading one.
+    subroutine write_velocities(bound)
+        real(qp), intent(in) :: bound
+        integer :: i, digits
+        character(len=:), allocatable :: text
+        if (.not. bound > 0) then
+            call write_numbered("v", run%v)
+            return
+        end if
+        do i = 1, size(run%v)
+            digits = 1
+            if (abs(run%v(i)) > bound) digits = min(precision_digits, &
+                floor(log10(abs(run%v(i)))) - floor(log10(bound)) + 1)
+            text = real_str(run%v(i), digits)
+            ! one digit: 3E-02, not the edit descriptor's 3.E-02
+            if (digits == 1) text = text(:index(text, ".") - 1)//text(index(text, ".") + 1:)
+            call out%put("v"//itoa(i)//" "//text)
+        end do
+    end subroutine write_velocities
 
     !> Lines `<name><i> <values(i)>`.
     subroutine write_numbered(name, values)

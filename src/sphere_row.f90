@@ -10,7 +10,8 @@ module sphere_row
     use sphere_row_kinds, only: sp, dp, xdp, qp
     use sphere_row_status, only: status_normal, status_collapsed, status_max_collisions, &
         status_invalid, event_start, event_collision, event_collapse, status_word, status_text, &
-        status_word_length
+        status_word_length, answer_exact, answer_certified, answer_tolerance, answer_bounded, &
+        answer_unresolved, answer_word
     use sphere_row_format, only: real_str, short_text, itoa, real_text, int_text, &
         number_text_length
     use sphere_row_engine_qp, only: scene_t, run_t, &
@@ -18,27 +19,27 @@ module sphere_row
         scene_check_qp => scene_check_wp, simulate_qp => simulate_wp, &
         gaps_at_qp => gaps_at_wp, kinetic_energy_qp => kinetic_energy_wp, &
         momentum_qp => momentum_wp, str_qp => str_wp, bounds_t, &
-        simulate_certified_qp => simulate_certified_wp
+        simulate_certified_qp => simulate_certified_wp, budget_qp => budget_wp
 #ifdef SPHERE_ROW_XDP
     use sphere_row_engine_xdp, only: scene_xdp_t => scene_t, run_xdp_t => run_t, &
         event_log_xdp_t => event_log_t, scene_init_xdp => scene_init_wp, &
         scene_check_xdp => scene_check_wp, simulate_xdp => simulate_wp, &
         gaps_at_xdp => gaps_at_wp, kinetic_energy_xdp => kinetic_energy_wp, &
         momentum_xdp => momentum_wp, str_xdp => str_wp, bounds_xdp_t => bounds_t, &
-        simulate_certified_xdp => simulate_certified_wp
+        simulate_certified_xdp => simulate_certified_wp, budget_xdp => budget_wp
 #endif
     use sphere_row_engine_dp, only: scene_dp_t => scene_t, run_dp_t => run_t, &
         event_log_dp_t => event_log_t, scene_init_dp => scene_init_wp, &
         scene_check_dp => scene_check_wp, simulate_dp => simulate_wp, &
         gaps_at_dp => gaps_at_wp, kinetic_energy_dp => kinetic_energy_wp, &
         momentum_dp => momentum_wp, str_dp => str_wp, bounds_dp_t => bounds_t, &
-        simulate_certified_dp => simulate_certified_wp
+        simulate_certified_dp => simulate_certified_wp, budget_dp => budget_wp
     use sphere_row_engine_sp, only: scene_sp_t => scene_t, run_sp_t => run_t, &
         event_log_sp_t => event_log_t, scene_init_sp => scene_init_wp, &
         scene_check_sp => scene_check_wp, simulate_sp => simulate_wp, &
         gaps_at_sp => gaps_at_wp, kinetic_energy_sp => kinetic_energy_wp, &
         momentum_sp => momentum_wp, str_sp => str_wp, bounds_sp_t => bounds_t, &
-        simulate_certified_sp => simulate_certified_wp
+        simulate_certified_sp => simulate_certified_wp, budget_sp => budget_wp
     use sphere_row_auto, only: auto_t, simulate_auto, simulate_in_dp
     implicit none
     private
@@ -47,13 +48,15 @@ module sphere_row
     public :: event_start, event_collision, event_collapse, status_word, real_str, &
         short_text, itoa
     public :: status_text, status_word_length, real_text, int_text, number_text_length
+    public :: answer_exact, answer_certified, answer_tolerance, answer_bounded, &
+        answer_unresolved, answer_word
     public :: scene_t, run_t, event_log_t
 #ifdef SPHERE_ROW_XDP
     public :: scene_xdp_t, run_xdp_t, event_log_xdp_t
 #endif
     public :: scene_dp_t, run_dp_t, event_log_dp_t
     public :: scene_sp_t, run_sp_t, event_log_sp_t
-    public :: scene_init, scene_check, simulate, gaps_at, kinetic_energy, momentum, str
+    public :: scene_init, scene_check, simulate, gaps_at, kinetic_energy, momentum, str, budget
     public :: bounds_t, bounds_dp_t, bounds_sp_t, simulate_certified, auto_t, simulate_auto
     public :: simulate_in_dp
 #ifdef SPHERE_ROW_XDP
@@ -116,6 +119,15 @@ module sphere_row
         module procedure momentum_xdp
 #endif
     end interface momentum
+
+    !> The work budget of a scene in collisions: its max_collisions, or for 0
+    !> max(10^6, 100 p).
+    interface budget
+        module procedure budget_qp, budget_dp, budget_sp
+#ifdef SPHERE_ROW_XDP
+        module procedure budget_xdp
+#endif
+    end interface budget
 
     !> Text form of a real with every significant digit of its kind.
     interface str

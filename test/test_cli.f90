@@ -127,9 +127,9 @@ contains
         call run_cli("e=1 events=yes", status, out, err)
         call check(error, status == 0, "events=yes: exit status")
         call check(error, index(out, "event"//achar(9)//"kind") > 0, "events=yes: no header")
-        ! 3 collision lines + start + header + 4 + 4 + 4 + 3 quantity lines
-        ! (collisions, t_end, status, precision; v, x; y)
-        call check(error, count_lines(out) == 3 + 4 + 4 + 3 + 1 + 1 + 4, &
+        ! 3 collision lines + start + header + 4 + 4 + 3 + 6 quantity lines
+        ! (collisions, t_end, status, precision, answer, v_bound; v, x; y)
+        call check(error, count_lines(out) == 3 + 4 + 4 + 3 + 1 + 1 + 6, &
             "events=yes: wrong number of lines")
     end subroutine test_events
 

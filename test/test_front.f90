@@ -164,7 +164,7 @@ contains
             bad("p=", 2, "p = : no value"), &
             bad("p=99999999999", 2, "p = 99999999999: beyond the largest integer"), &
             bad("p=1000001", 2, "p = 1000001: allowed an integer 2 <= p <= 1000000"), &
-            bad("max_collisions=0", 2, "max_collisions = 0: allowed an integer"), &
+            bad("max_collisions=-1", 2, "max_collisions = -1: allowed an integer"), &
             bad("max_collisions=1.5", 2, "max_collisions = 1.5: not an integer"), &
             bad("max_collisions=-5", 2, "max_collisions = -5: allowed") &
             ]
@@ -778,7 +778,7 @@ contains
         text = cli%usage()
         call check(error, index(text, "usage: sphere-row [FILE]") == 1, "usage line")
         call check(error, index(text, "  p=4 ") > 0 .and. index(text, "  e=0.2 ") > 0 .and. &
-            index(text, "  tol=1.93e-34 ") > 0 .and. index(text, "max_collisions=1000000") > 0 &
+            index(text, "  tol=1.93e-34 ") > 0 .and. index(text, "max_collisions=0 ") > 0 &
             .and. index(text, "events=no") > 0 .and. index(text, "masses=m1,m2,...") > 0, &
             "keys with defaults: "//text)
         call check(error, index(text, "allowed 0 <= e <= 1") > 0 .and. &

@@ -57,10 +57,11 @@ contains
         call cli%add_reals("masses", "m1,m2,...", "the masses, p values (default: all 1)", &
             lo=0.0_qp, lo_open=.true., in_file=.true.)
         call cli%add_real("tol", short_text(defaults%tol), "rates below tol*v0 and gaps " &
-            //"below tol*max(d, a) are insignificant", lo=0.0_qp, hi=1.0_qp, hi_open=.true., &
+            //"below tol*max(a) are insignificant", lo=0.0_qp, hi=1.0_qp, hi_open=.true., &
             shown=short_text(defaults%tol, 3), in_file=.true.)
         call cli%add_int("max_collisions", itoa(defaults%max_collisions), &
-            "safety net: a run ends after this many collisions", lo=1, in_file=.true.)
+            "the work budget: a run that takes this many collisions ends unresolved " &
+            //"(0: max(10^6, 100 p))", lo=0, in_file=.true.)
         call cli%add_int("calendar_from", itoa(defaults%calendar_from), "rows of at least " &
             //"this many spheres take the next impact from a calendar (a heap), shorter " &
             //"rows scan every gap", lo=2, in_file=.true.)

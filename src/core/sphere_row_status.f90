@@ -9,6 +9,8 @@ module sphere_row_status
     public :: status_negative_gap, status_budget, status_solver_failed
     public :: event_start, event_collision, event_collapse
     public :: status_word, status_text, status_word_length
+    public :: answer_exact, answer_certified, answer_tolerance, answer_bounded, &
+        answer_unresolved, answer_word
 
     !> The run ended by the definition's criterion: no gap is closing any more.
     integer, parameter :: status_normal = 0
@@ -37,7 +39,48 @@ module sphere_row_status
     !> Event kinds of the optional event record.
     integer, parameter :: event_start = 0, event_collision = 1, event_collapse = 2
 
+    !> How good an answer is, from the best to the weakest; a run's answer is
+    !> the weakest of its end and its collapse limits.
+    !>
+    !> Exact: a finite sequence that separated (every rate >= 0), or a limit in
+    !> closed form (a plastic pool at e = 0): exact to the working precision.
+    integer, parameter :: answer_exact = 1
+    !> Certified: a limit taken on a numerical certificate (a cycle's
+    !> eigenvalues, an invariant box of ratios), exact to the working
+    !> precision where the certificate holds.
+    integer, parameter :: answer_certified = 2
+    !> Tolerance: the run ended with closing rates all below tol v0 (the
+    !> definition's criterion, "insignificant" relative velocities); the final
+    !> velocities lie within the stated bound of those given.
+    integer, parameter :: answer_tolerance = 3
+    !> Bounded: a group's limit taken where its velocities are known to lie
+    !> within the stated bound of its mean.
+    integer, parameter :: answer_bounded = 4
+    !> Unresolved: the work budget was spent; the groups still active are
+    !> named, with the bound reached on them.
+    integer, parameter :: answer_unresolved = 5
+
 contains
+
+    !> The word printed for an answer code.
+    pure function answer_word(answer) result(word)
+        integer, intent(in) :: answer
+        character(len=:), allocatable :: word
+        select case (answer)
+        case (answer_exact)
+            word = "exact"
+        case (answer_certified)
+            word = "certified"
+        case (answer_tolerance)
+            word = "tolerance"
+        case (answer_bounded)
+            word = "bounded"
+        case (answer_unresolved)
+            word = "unresolved"
+        case default
+            word = "none"
+        end select
+    end function answer_word
 
     !> The word printed for a status code.
     pure function status_word(status) result(word)

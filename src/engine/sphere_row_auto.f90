@@ -172,9 +172,15 @@ contains
         run%t_end = real(low%t_end, qp)
         run%limits%n = low%limits%n
         run%limits%closed_form = low%limits%closed_form
+        run%limits%exact = low%limits%exact
+        run%limits%certified = low%limits%certified
+        run%limits%bounded = low%limits%bounded
         run%limits%first = low%limits%first
         run%limits%last = low%limits%last
         run%limits%t = real(low%limits%t, qp)
+        run%answer = low%answer
+        run%v_bound = real(low%v_bound, qp)
+        if (allocated(low%active)) run%active = low%active
         run%y = real(low%y, qp)
         run%dy = real(low%dy, qp)
         run%x1 = real(low%x1, qp)

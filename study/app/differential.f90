@@ -12,7 +12,7 @@
 !> are counted by the largest difference of their velocities; rows answered
 !> only before or only after are listed. It exits 1 if a finite run changed.
 program c12_differential
-    use sphere_row, only: qp, scene_t, run_t, simulate, itoa, str, status_word, &
+    use sphere_row, only: qp, scene_t, run_t, simulate, itoa, str, status_word, real_str, &
         status_normal, status_collapsed
     use sphere_row_survey, only: survey_t, survey_open, survey_close, survey_scene
     use sphere_row_tables, only: open_table, close_table, tab, split_tabs, row_t, write_rows
@@ -39,6 +39,9 @@ program c12_differential
         lo=1.0_qp)
     call cli%add_word("before", "build/differential/before", "compare: the first table's directory")
     call cli%add_word("after", "build/differential/after", "compare: the second table's directory")
+    call cli%add_real("rel", "0", "compare: a finite run's velocities may differ by this much, "// &
+        "relative to its largest (0: bit for bit; its count, status and end time never)", &
+        lo=0.0_qp)
     call read_keys(cli)
     mode = cli%get_word("mode")
     select case (mode)
@@ -110,11 +113,12 @@ contains
             call split_tabs(before(i), a)
             call split_tabs(after(i), b)
             if (a(3) == status_word(status_normal)) then
-                if (trim(before(i)) /= trim(after(i))) then
+                if (.not. same_run(a, b)) then
                     changed_finite = changed_finite + 1
                     if (changed_finite <= 10) print "(a)", "finite run changed: row " &
-                        //a(1)//": "//a(3)//" "//a(4)//" -> " &
-                        //b(3)//" "//b(4)
+                        //trim(a(1))//": "//trim(a(3))//" "//trim(a(4))//" -> " &
+                        //trim(b(3))//" "//trim(b(4))//", velocities apart by " &
+                        //real_str(apart(a, b), 2)//" of the largest"
                 end if
             else if (a(3) == status_word(status_collapsed) .and. &
                 b(3) == status_word(status_collapsed)) then
@@ -131,8 +135,8 @@ contains
                 gained = gained + 1
             else if (a(3) == status_word(status_collapsed)) then
                 lost = lost + 1
-                if (lost <= 10) print "(a)", "answer lost: row "//a(1)//": " &
-                    //a(3)//" -> "//b(3)
+                if (lost <= 10) print "(a)", "answer lost: row "//trim(a(1))//": " &
+                    //trim(a(3))//" -> "//trim(b(3))
             end if
         end do
         print "(a)", itoa(count_rows)//" rows: "//itoa(changed_finite)//" finite runs changed; " &
@@ -140,6 +144,47 @@ contains
             //itoa(gained)//" answered only after, "//itoa(lost)//" only before"
         if (changed_finite > 0) stop 1
     end subroutine compare_tables
+
+    !> Two lines of the same finite run: the same fields, but the velocities
+    !> (from the sixth) within `rel` of the largest of them.
+    logical function same_run(a, b)
+        character(len=*), intent(in) :: a(:), b(:)
+        real(qp) :: x, y, rel, largest
+        integer :: j
+        same_run = size(a) == size(b)
+        if (.not. same_run) return
+        same_run = all(a(:5) == b(:5))
+        if (.not. same_run) return
+        rel = cli%get_real("rel")
+        largest = 0
+        do j = 6, size(a)
+            read (a(j), *) x
+            largest = max(largest, abs(x))
+        end do
+        do j = 6, size(a)
+            if (a(j) == b(j)) cycle
+            read (a(j), *) x
+            read (b(j), *) y
+            same_run = abs(x - y) <= rel*largest
+            if (.not. same_run) return
+        end do
+    end function same_run
+
+    !> The largest difference of two lines' velocities, relative to the largest.
+    real(qp) function apart(a, b)
+        character(len=*), intent(in) :: a(:), b(:)
+        real(qp) :: x, y, largest
+        integer :: j
+        apart = 0
+        largest = tiny(1.0_qp)
+        do j = 6, min(size(a), size(b))
+            read (a(j), *) x
+            read (b(j), *) y
+            largest = max(largest, abs(x))
+            apart = max(apart, abs(x - y))
+        end do
+        apart = apart/largest
+    end function apart
 
     !> The data lines of a table (its header dropped).
     subroutine read_lines(path, lines)

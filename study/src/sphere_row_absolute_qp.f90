@@ -1,6 +1,6 @@
 !> Method 2 (absolute variables) of sphere_row_absolute.inc instantiated in real128.
 module sphere_row_absolute_qp
-    use sphere_row, only: wp => qp, qp, scene_wp_t => scene_t, scene_check, status_normal, &
+    use sphere_row, only: wp => qp, qp, scene_wp_t => scene_t, scene_check, budget, status_normal, &
         status_max_collisions
     use sphere_row_outcome, only: outcome_t, outcome_start, outcome_add
     use sphere_row_status, only: status_negative_gap

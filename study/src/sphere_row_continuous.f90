@@ -15,7 +15,7 @@ module sphere_row_continuous
     use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
     use, intrinsic :: iso_c_binding, only: c_int, c_double, c_size_t, c_ptr, c_funptr, &
         c_null_ptr, c_null_funptr, c_funloc, c_loc, c_f_pointer, c_associated
-    use sphere_row, only: dp, qp, scene_dp_t, scene_check
+    use sphere_row, only: dp, qp, scene_dp_t, scene_check, budget
     use sphere_row_outcome, only: outcome_t, outcome_start, outcome_add
     use sphere_row_status, only: status_normal, status_max_collisions, status_budget, &
         status_solver_failed, status_invalid
@@ -69,7 +69,7 @@ contains
     !> at least -tol*v0 (the definition's criterion with tol as the
     !> insignificant rate). `stepper` is stepper_rk8pd (default) or
     !> stepper_rkf45. The run ends with status_max_collisions after
-    !> `max_events` impacts (default scene%max_collisions), with status_budget at
+    !> `max_events` impacts (default budget(scene)), with status_budget at
     !> time `t_max` (default 1e9 L/v0), and with status_solver_failed if GSL
     !> reports an error. scene%tol is not used. `record` asks for every
     !> collision in `out`.
@@ -143,7 +143,7 @@ contains
         subroutine set_up()
             p = scene%p
             n = 2*p
-            events_max = scene%max_collisions
+            events_max = budget(scene)
             if (present(max_events)) events_max = max_events
             length = max(scene%d, maxval(scene%a))
             if (length <= 0.0_dp) length = 1.0_dp

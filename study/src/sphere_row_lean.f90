@@ -73,7 +73,7 @@
 !> and the terms of second order in u dropped above (at most about
 !> lean_collisions_max times 10 u relative, 1e-12).
 module sphere_row_lean
-    use sphere_row, only: dp, qp, scene_t, run_t, scene_check, simulate, status_normal, &
+    use sphere_row, only: dp, qp, scene_t, run_t, scene_check, budget, simulate, status_normal, &
         status_invalid
     implicit none
     private
@@ -174,7 +174,7 @@ contains
         self%v0 = scene%v0
         self%tv = scene%tol*scene%v0
         self%ratio = left(1)
-        self%n_stop = min(scene%max_collisions, lean_collisions_max)
+        self%n_stop = min(budget(scene), lean_collisions_max)
         call prepare_real64(self)
         self%ready = .true.
         stat = status_normal

@@ -10,7 +10,7 @@
 !> which is how the method loses collisions.
 module sphere_row_stepping
     use, intrinsic :: iso_fortran_env, only: int64
-    use sphere_row, only: dp, qp, scene_dp_t, scene_check
+    use sphere_row, only: dp, qp, scene_dp_t, scene_check, budget
     use sphere_row_outcome, only: outcome_t, outcome_start, outcome_add
     use sphere_row_status, only: status_normal, status_max_collisions, status_budget, &
         status_invalid
@@ -31,7 +31,7 @@ contains
     !> it would be turned back into approach. The run ends normally when no rate
     !> is below -scene%tol*v0 (the definition's criterion), with status_budget
     !> after `max_steps` steps (default default_max_steps), and with
-    !> status_max_collisions after scene%max_collisions impacts. Collision times
+    !> status_max_collisions after budget(scene) impacts. Collision times
     !> are the ends of the steps in which they were found. `record` asks for every
     !> collision in `out`.
     pure subroutine simulate_stepping(scene, h, out, record, max_steps)
@@ -89,7 +89,7 @@ contains
             do i = 1, p - 1
                 min_gap = min(min_gap, y(i))
                 if (y(i) <= 0.0_dp .and. dy(i) < -tv) then
-                    if (out%n >= scene%max_collisions) then
+                    if (out%n >= budget(scene)) then
                         out%status = status_max_collisions
                         exit
                     end if
