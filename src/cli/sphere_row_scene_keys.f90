@@ -59,6 +59,10 @@ contains
         call cli%add_real("tol", short_text(defaults%tol), "rates below tol*v0 and gaps " &
             //"below tol*max(a) are insignificant", lo=0.0_qp, hi=1.0_qp, hi_open=.true., &
             shown=short_text(defaults%tol, 3), in_file=.true.)
+        call cli%add_real("vtol", short_text(defaults%vtol), "a cascade at one instant that " &
+            //"has run long is taken to its limit when every velocity it will end with is " &
+            //"within vtol*v0 of its pool's (0: never)", lo=0.0_qp, hi=1.0_qp, hi_open=.true., &
+            in_file=.true.)
         call cli%add_int("max_collisions", itoa(defaults%max_collisions), &
             "the work budget: a run that takes this many collisions ends unresolved " &
             //"(0: max(10^6, 100 p))", lo=0, in_file=.true.)
@@ -116,6 +120,7 @@ contains
             max_collisions=cli%get_int("max_collisions"), masses=masses, gaps=gaps)
         if (stat /= status_normal) call fatal_error(error, trim(msg))
         scene%calendar_from = cli%get_int("calendar_from")
+        scene%vtol = cli%get_real("vtol")
     end subroutine scene_from_cli
 
     !> Refuse a scene that a run in real(8) (precision = dp) cannot carry:

@@ -51,6 +51,17 @@ module sphere_row_policy
         !> (derived: a period's operations, rounded).
         real(qp) :: drift_noise = 1.0e3_qp
 
+        ! ---- the bounded answer of a long cascade at one instant ----
+        !> Collisions at one instant after which a cascade's cone bound is
+        !> first looked at, and then after twice, four times as many (chosen so
+        !> that a finite cascade of a struck row is stepped to its end: see
+        !> docs/collapse.md for the measurement).
+        integer :: bounded_after = 4096
+        !> The default velocity tolerance of a bounded answer, relative to v0
+        !> (scene_t%vtol; chosen by measurement on the collapse survey: see
+        !> docs/collapse.md).
+        real(qp) :: vtol = 1.0e-10_qp
+
         ! ---- the touching block: its proof (box) and its tries ----
         !> Collisions next to a closed gap before a cascade through touching
         !> spheres is tried for its limit: at first, and at most after failed

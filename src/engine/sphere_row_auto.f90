@@ -160,6 +160,7 @@ contains
         low%max_collisions = scene%max_collisions
         low%closed_form_limits = scene%closed_form_limits
         low%calendar_from = scene%calendar_from
+        low%vtol = real(scene%vtol, dp)
     end subroutine to_dp
 
     !> A real64 run's results in a real128 run.

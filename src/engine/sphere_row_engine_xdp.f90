@@ -27,5 +27,6 @@ contains
     include "../collapse/sphere_row_fallback.inc"
     include "../collapse/sphere_row_cycle.inc"
     include "../collapse/sphere_row_bounds.inc"
+    include "../collapse/sphere_row_bounded.inc"
 end module sphere_row_engine_xdp
 #endif

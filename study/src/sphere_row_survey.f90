@@ -16,7 +16,7 @@ module sphere_row_survey
     use, intrinsic :: iso_c_binding, only: c_ptr, c_double, c_long
     use, intrinsic :: iso_fortran_env, only: int64
     use sphere_row, only: dp, qp, scene_t, run_t, scene_init, simulate, momentum, &
-        kinetic_energy, status_normal, status_collapsed, short_text, itoa
+        kinetic_energy, status_normal, status_collapsed, status_max_collisions, short_text, itoa
     use sphere_row_gsl, only: gsl_rng_mt19937, gsl_rng_alloc, gsl_rng_set, &
         gsl_rng_uniform_pos, gsl_rng_free
     ! the rule and collision of the cascade at one instant in double
@@ -59,20 +59,24 @@ module sphere_row_survey
         integer :: p_min = 2, p_max = 20
         real(qp) :: mass_span = 1.0e3_qp
         real(qp) :: zero_gap_share = 0.2_qp
+        !> Share of the rows of equal masses.
+        real(qp) :: equal_share = 0.5_qp
     end type survey_t
 
 contains
 
     !> Start a survey with its seed and ranges.
-    subroutine survey_open(survey, seed, p_min, p_max, mass_span)
+    subroutine survey_open(survey, seed, p_min, p_max, mass_span, equal_share)
         type(survey_t), intent(out) :: survey
         integer, intent(in) :: seed, p_min, p_max
         real(qp), intent(in) :: mass_span
+        real(qp), intent(in), optional :: equal_share
         survey%rng = gsl_rng_alloc(gsl_rng_mt19937)
         call gsl_rng_set(survey%rng, int(seed, c_long))
         survey%p_min = p_min
         survey%p_max = p_max
         survey%mass_span = mass_span
+        if (present(equal_share)) survey%equal_share = equal_share
     end subroutine survey_open
 
     !> Release the survey's generator.
@@ -93,7 +97,7 @@ contains
             survey%p_max - survey%p_min)
         allocate (m(p), a(p - 1))
         m = 1.0_qp
-        if (uniform() < 0.5_qp) then
+        if (uniform() < 1.0_qp - survey%equal_share) then
             do i = 1, p
                 m(i) = survey%mass_span**(2.0_qp*uniform() - 1.0_qp)
             end do
@@ -124,22 +128,32 @@ contains
         type(run_t), intent(in) :: run
         real(qp), intent(in) :: slack, per_collision
         character(len=:), allocatable, intent(out) :: why
-        real(qp) :: v0(scene%p), p_scale, e_start, resolution
+        real(qp) :: v0(scene%p), path(scene%p), p_scale, e_start, resolution
+        integer :: i
         why = ""
         v0 = 0.0_qp
         v0(1) = scene%v0
         p_scale = maxval(scene%m)*scene%v0
         e_start = kinetic_energy(scene, v0)
         resolution = (slack + per_collision*run%n)*epsilon(1.0_qp)
-        if (run%status /= status_normal .and. run%status /= status_collapsed) then
+        ! the velocities along the run's own state, x_1's rate and the rates
+        ! (run%v is anchored by the momentum where sphere 1 is not the
+        ! heaviest, which would make its momentum right by construction)
+        path(1) = run%dx1
+        do i = 1, scene%p - 1
+            path(i + 1) = path(i) + run%dy(i)
+        end do
+        if (run%status /= status_normal .and. run%status /= status_collapsed .and. &
+            run%status /= status_max_collisions) then
             why = "status"
-        else if (abs(momentum(scene, run%v) - momentum(scene, v0)) > resolution*p_scale) then
+        else if (abs(momentum(scene, path) - momentum(scene, v0)) > resolution*p_scale) then
             why = "momentum"
         else if (kinetic_energy(scene, run%v) > e_start*(1.0_qp + resolution)) then
             why = "energy"
         else if (any(run%y < 0.0_qp)) then
             why = "negative_gap"
-        else if (any(run%dy < -scene%tol*scene%v0)) then
+        else if (run%status /= status_max_collisions .and. &
+            any(run%dy < -scene%tol*scene%v0)) then
             why = "closing"
         end if
     end subroutine check_invariants

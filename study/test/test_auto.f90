@@ -329,7 +329,7 @@ contains
         character(len=*), parameter :: dir = "build/test-collapse-threads"
         character(len=*), parameter :: tables(3) = [character(len=24) :: &
             "collapse_unanswered.tsv", "collapse_answers.tsv", "collapse_by_p.tsv"]
-        call run_twice(error, dir, "c12-collapse", "n=60 n_before=20 cap=3000 further=4096", &
+        call run_twice(error, dir, "c12-collapse", "n=60 n_before=20 cap=3000", &
             "", "", &
             "OMP_NUM_THREADS=1 ", "OMP_NUM_THREADS=2 ", "", "", tables)
     end subroutine test_collapse_threads
