@@ -28,7 +28,7 @@ program c12_collapse
     type(cli_t) :: cli
     character(len=:), allocatable :: out
     integer :: n, n_before, cap, seed, p_max
-    real(qp) :: span, equal_share
+    real(qp) :: span, equal_share, vtol
     !> What one run leaves for the tables.
     type :: outcome_t
         integer :: answer = 0
@@ -57,6 +57,8 @@ program c12_collapse
         lo=1.0_qp)
     call cli%add_real("equal_share", "0.5", "share of the rows of equal masses", lo=0.0_qp, &
         hi=1.0_qp)
+    call cli%add_real("vtol", "-1", "the velocity tolerance of a bounded answer of every row "// &
+        "(below 0: the engine's default)", hi=1.0_qp, hi_open=.true.)
     call read_keys(cli)
     out = cli%get_word("out")
     n = cli%get_int("n")
@@ -66,6 +68,7 @@ program c12_collapse
     p_max = cli%get_int("p_max")
     span = cli%get_real("span")
     equal_share = cli%get_real("equal_share")
+    vtol = cli%get_real("vtol")
 
     call run_survey()
     call write_tables()
@@ -83,6 +86,7 @@ contains
         do i = 1, n
             call survey_scene(survey, rows(i))
             rows(i)%max_collisions = cap
+            if (vtol >= 0) rows(i)%vtol = vtol
         end do
         call survey_close(survey)
         ! jobs 1..n: the rows with every rule; n+1..n+n_before: the first
