@@ -3,7 +3,9 @@
 !> form, with the fallback rule alone, or with the same run without limits.
 module test_collapse
     use sphere_row, only: qp, dp, scene_t, run_t, event_log_t, scene_init, simulate, &
-        kinetic_energy, momentum, status_normal, status_collapsed, status_max_collisions, str, itoa
+        kinetic_energy, momentum, status_normal, status_collapsed, status_max_collisions, str, &
+        itoa, answer_exact, answer_certified, answer_tolerance, answer_bounded, &
+        answer_unresolved, answer_word
     use sphere_row_cascade, only: cascade_jump
     use testsuite, only: error_t, unittest_t, new_unittest, check, seed_random, cases
     implicit none
@@ -17,6 +19,97 @@ module test_collapse
     real(qp), parameter :: e_crit_4 = 3 - 2*sqrt(2.0_qp), e_crit_3 = 7 - 4*sqrt(3.0_qp)
 
 contains
+
+    !> A run cut by its budget is unresolved, names its active groups, and
+    !> the velocities it ends with lie within its bound of those the same
+    !> scene ends with when run to its answer (the cone bound: whatever the
+    !> order of the collisions still to come). Random rows of light and heavy
+    !> spheres, cut after 200 to 2000 collisions.
+    subroutine test_unresolved_bound(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(scene_t) :: scene
+        type(run_t) :: short, long
+        real(qp) :: u(42)
+        integer :: stat, i, p, checked
+        character(len=200) :: msg
+        call seed_random(8642, 7)
+        checked = 0
+        do i = 1, cases(80, 1200)
+            call random_number(u)
+            p = 3 + int(8*u(1))
+            call scene_init(scene, stat, msg, p=p, e=u(2), &
+                masses=1.0e3_qp**(2*u(3:p + 2) - 1), &
+                gaps=merge(0.0_qp, 2*u(23:p + 21), u(23:p + 21) < 0.3_qp), max_collisions=20000)
+            call simulate(scene, long)
+            if (long%answer > answer_certified .or. long%n < 40) cycle
+            scene%max_collisions = 10 + int((long%n - 20)*u(42))
+            call simulate(scene, short)
+            if (short%answer /= answer_unresolved) cycle
+            checked = checked + 1
+            call check(error, size(short%active, 2) > 0, "unresolved row "//itoa(i)// &
+                ": no active group named")
+            call check(error, all(abs(long%v - short%v) <= short%v_bound*(1 + 1.0e-20_qp)), &
+                "unresolved row "//itoa(i)//": velocities moved by "// &
+                str(maxval(abs(long%v - short%v)))//", beyond the bound "//str(short%v_bound))
+            if (allocated(error)) return
+        end do
+        call check(error, checked >= cases(12, 150), "unresolved bounds: too few rows checked: " &
+            //itoa(checked))
+    end subroutine test_unresolved_bound
+
+    !> A touching row of 20 equal spheres, struck at one end, merges (the box
+    !> proves it: every sphere at v0/20). With the closed-form rules off the
+    !> engine steps its cascade at one instant, and the bounded rule takes it
+    !> after 4096 collisions, its cone bound then within vtol (1e-6): every
+    !> velocity it gives is within that bound of the merge (e = 0.5 and 0.6).
+    subroutine test_bounded_cascade(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(scene_t) :: scene
+        type(run_t) :: bounded, merged
+        integer :: stat, i
+        character(len=200) :: msg
+        real(qp), parameter :: es(2) = [0.5_qp, 0.6_qp]
+        do i = 1, size(es)
+            call scene_init(scene, stat, msg, p=20, e=es(i), gaps=spread(0.0_qp, 1, 19))
+            call simulate(scene, merged)
+            scene%closed_form_limits = .false.
+            scene%vtol = 1.0e-6_qp
+            call simulate(scene, bounded)
+            call check(error, merged%answer == answer_certified .and. &
+                bounded%answer == answer_bounded .and. bounded%limits%bounded == 1, &
+                "bounded cascade, e = "//str(es(i))//": answers "//answer_word(merged%answer) &
+                //" and "//answer_word(bounded%answer))
+            call check(error, bounded%v_bound > 0 .and. bounded%v_bound <= scene%vtol, &
+                "bounded cascade: bound "//str(bounded%v_bound)//" not in (0, vtol]")
+            call check(error, all(abs(bounded%v - merged%v) <= bounded%v_bound*(1 + 1.0e-20_qp)), &
+                "bounded cascade: velocities "//str(maxval(abs(bounded%v - merged%v)))// &
+                " from the merge, beyond the bound "//str(bounded%v_bound))
+            if (allocated(error)) return
+        end do
+    end subroutine test_bounded_cascade
+
+    !> A run that ends with an insignificant closing rate says tolerance, and
+    !> the same scene at a finer tolerance ends within the bound it gives:
+    !> sphere 2 of mass 1e-40, sent off at 1.2e-40 v0, still closes on sphere
+    !> 3 at rest when the run ends (its rate is below tol v0 = 1.9e-34).
+    subroutine test_tolerance_end(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(scene_t) :: scene
+        type(run_t) :: coarse, fine
+        integer :: stat
+        character(len=200) :: msg
+        call scene_init(scene, stat, msg, masses=[1.0e-40_qp, 1.0_qp, 1.0_qp, 1.0_qp])
+        call simulate(scene, coarse)
+        scene%tol = 1.0e-60_qp
+        call simulate(scene, fine)
+        call check(error, coarse%answer == answer_tolerance .and. fine%answer == answer_exact, &
+            "tolerance end: answers "//answer_word(coarse%answer)//" and " &
+            //answer_word(fine%answer))
+        call check(error, coarse%v_bound > 0 .and. &
+            all(abs(fine%v - coarse%v) <= coarse%v_bound*(1 + 1.0e-20_qp)), &
+            "tolerance end: velocities "//str(maxval(abs(fine%v - coarse%v)))// &
+            " from the finer run, beyond the bound "//str(coarse%v_bound))
+    end subroutine test_tolerance_end
 
     !> A certified cycle's limit is taken at the accumulation time of its
     !> collisions: the same scene stepped by the fallback alone at a tolerance
@@ -60,6 +153,9 @@ contains
         type(unittest_t), allocatable :: tests(:)
         tests = [ &
             new_unittest("light_middle_sphere", test_light_middle), &
+            new_unittest("unresolved_bound_holds", test_unresolved_bound), &
+            new_unittest("bounded_cascade_within_its_bound", test_bounded_cascade), &
+            new_unittest("tolerance_end_within_its_bound", test_tolerance_end), &
             new_unittest("cycle_limit_at_its_accumulation_time", test_cycle_time), &
             new_unittest("plastic_cascade_matches_fallback", test_plastic_cascade), &
             new_unittest("plastic_unequal_masses", test_plastic_unequal), &

@@ -14,6 +14,75 @@ module test_engine
 
 contains
 
+    !> A light sphere 1 bounces back at about e v0 and sends sphere 2 off at
+    !> (1 + e) m_1/(m_1 + m_2) v0, which a sum from sphere 1 would lose in the
+    !> rounding of the large velocity: masses 1e-40, 1, 1, 1 give v2 =
+    !> 1.2e-40 (closed form, to 1e-30 relative), and p = 2 with masses 1e-20, 1
+    !> gives v2 = 1.2e-20/(1 + 1e-20) to 1e-30 relative.
+    subroutine test_small_behind_large(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(scene_t) :: scene
+        type(run_t) :: run
+        integer :: stat
+        character(len=200) :: msg
+        real(qp) :: exact
+        call scene_init(scene, stat, msg, masses=[1.0e-40_qp, 1.0_qp, 1.0_qp, 1.0_qp])
+        call simulate(scene, run)
+        exact = 1.2_qp*1.0e-40_qp/(1 + 1.0e-40_qp)
+        call check(error, abs(run%v(2) - exact) <= 1.0e-30_qp*exact, &
+            "masses 1e-40,1,1,1: v2 = "//str(run%v(2))//", closed form "//str(exact))
+        call scene_init(scene, stat, msg, p=2, masses=[1.0e-20_qp, 1.0_qp])
+        call simulate(scene, run)
+        exact = 1.2_qp*1.0e-20_qp/(1 + 1.0e-20_qp)
+        call check(error, abs(run%v(2) - exact) <= 1.0e-30_qp*exact, &
+            "p = 2, masses 1e-20,1: v2 = "//str(run%v(2))//", closed form "//str(exact))
+    end subroutine test_small_behind_large
+
+    !> d only shifts positions: the collisions, collapse limits and velocities
+    !> of p = 20 at e = 0.5 do not depend on it (d = 1 and d = 1e34).
+    subroutine test_independent_of_d(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(scene_t) :: scene
+        type(run_t) :: near, far
+        integer :: stat
+        character(len=200) :: msg
+        call scene_init(scene, stat, msg, p=20, e=0.5_qp)
+        call simulate(scene, near)
+        scene%d = 1.0e34_qp
+        call simulate(scene, far)
+        call check(error, near%n == far%n .and. near%limits%n == far%limits%n .and. &
+            all(near%v == far%v), "p = 20, e = 0.5: d = 1e34 changes the run: " &
+            //str(real(near%n, qp))//" against "//str(real(far%n, qp))//" collisions")
+    end subroutine test_independent_of_d
+
+    !> At equal impact times and equal approach rates the leftmost pair
+    !> collides first (the documented rule, in the scan and in the calendar).
+    !> In the touching row of masses 2, 1, 1, 2 at e = 1/2, contacts 1 and 2
+    !> both close at rate -9/16 v0 (exact in binary) before the fourth
+    !> collision; that collision must be at contact 1.
+    subroutine test_tie_leftmost(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(scene_t) :: scene
+        type(run_t) :: run
+        type(event_log_t) :: log
+        integer :: stat, way
+        character(len=200) :: msg
+        call scene_init(scene, stat, msg, e=0.5_qp, masses=[2.0_qp, 1.0_qp, 1.0_qp, 2.0_qp], &
+            gaps=[0.0_qp, 0.0_qp, 0.0_qp])
+        do way = 1, 2
+            if (way == 2) scene%calendar_from = 2
+            call simulate(scene, run, log)
+            call check(error, log%n >= 4, "tie: fewer than 4 events")
+            if (allocated(error)) return
+            call check(error, all(log%y(1:2, 3) == 0.0_qp) .and. &
+                log%dy(1, 3) == log%dy(2, 3) .and. log%dy(1, 3) < 0.0_qp, &
+                "tie: contacts 1 and 2 do not close at one rate before event 4")
+            call check(error, log%first(4) == 1 .and. log%last(4) == 2, &
+                "tie: event 4 is at pair "//str(real(log%first(4), qp))//", not the leftmost")
+            if (allocated(error)) return
+        end do
+    end subroutine test_tie_leftmost
+
     !> The definition's row, elastic, with d = 2.5 and a = 0.5: sphere i rests
     !> at x = 3 (i - 1) until the one behind it arrives at t = (i - 1)/2 and
     !> moves on at v0, so at the last collision, t = 1.5, the positions are
@@ -44,6 +113,9 @@ contains
             new_unittest("energy_loss_per_collision", test_energy_loss), &
             new_unittest("elastic_cradle_p2_to_50", test_elastic_cradle), &
             new_unittest("elastic_cradle_positions", test_cradle_positions), &
+            new_unittest("small_velocity_behind_a_large_one", test_small_behind_large), &
+            new_unittest("closed_gaps_independent_of_d", test_independent_of_d), &
+            new_unittest("tie_goes_to_the_leftmost_pair", test_tie_leftmost), &
             new_unittest("scaling_lengths", test_scaling_lengths), &
             new_unittest("scaling_speed", test_scaling_speed), &
             new_unittest("low_e_grid_terminates", test_low_e), &
