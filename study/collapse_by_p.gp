@@ -1,17 +1,29 @@
-# Collapse in general rows: share of seeded random rows that end with an answer
-# (normal or quasi-plastic within the collision cap), by row length p.
+# Collapse in general rows: how good the answer of seeded random rows is, by
+# row length p: the share of rows exact, certified, ended at tolerance,
+# bounded and unresolved (every collapse rule, the survey's budget).
 # Call: gnuplot -e "dir='results'; term='png'; out='results/collapse_by_p.png'" study/collapse_by_p.gp
 if (term eq 'png') { set terminal pngcairo size 1000,600 font ',11' } else { set terminal svg size 1000,600 dynamic font ',11' }
 set output out
 set datafile separator tab
 set datafile columnheaders
 f = dir.'/collapse_by_p.tsv'
-set title "Collapse in general rows: random rows that end with an answer, closed-form collapse limits"
+set title "Collapse in general rows: how good the answer is, by row length (random rows, every rule)"
 set xlabel "number of spheres p"
-set ylabel "share of rows answered"
-set yrange [0:1.05]
+set ylabel "share of rows"
+set yrange [0:1]
+set xrange [1.5:*]
 set xtics 1
-set grid
-set key bottom left box opaque
-plot f using (column("p")):(column("answered_share")) with linespoints pt 7 ps 1.3 lw 2 \
-     lc rgb '#1f77b4' title 'answered within the collision cap'
+set grid y
+set key outside right top box opaque
+set style fill solid 0.85 border -1
+w = 0.8
+s(c) = column(c)/column("scenes")
+plot f using (column("p")):(s("exact")+s("certified")+s("tolerance")+s("bounded")+s("unresolved")):(w) \
+        with boxes lc rgb '#d62728' title 'unresolved', \
+     f using (column("p")):(s("exact")+s("certified")+s("tolerance")+s("bounded")):(w) \
+        with boxes lc rgb '#ff7f0e' title 'bounded', \
+     f using (column("p")):(s("exact")+s("certified")+s("tolerance")):(w) \
+        with boxes lc rgb '#bcbd22' title 'tolerance', \
+     f using (column("p")):(s("exact")+s("certified")):(w) \
+        with boxes lc rgb '#1f77b4' title 'certified', \
+     f using (column("p")):(s("exact")):(w) with boxes lc rgb '#2ca02c' title 'exact'

@@ -123,39 +123,20 @@ contains
         call section("collapse", "Collapse in general rows", &
             [character(len=60) :: "collapse_by_p"], &
             "Seeded random rows (p from 2, masses equal or log-uniform over six decades, "// &
-            "e uniform in [0, 1], a fifth of the gaps closed) run to their end with the "// &
-            "collapse limits in closed form (a plastic cascade pooled at e = 0, a cascade "// &
-            "through touching spheres proven to merge by an invariant box of its momentum "// &
-            "ratios (against collisions in any order, or, where its gaps are exactly "// &
-            "closed, those the engine's order at equal times can choose), or by its "// &
-            "sequence in the engine's order at equal times settling into "// &
-            "a contracting pattern of every contact (a shuttle of part of the block jumped "// &
-            "by powers of its period's map; the pattern checked again in real80 where "// &
-            "real64's rounding is too coarse for its margins) or, in a block whose gaps "// &
-            "are exactly "// &
-            "closed, by its rates all falling below the insignificant rate within the "// &
-            "try, every choice on the way clear (the fallback's own end, reached "// &
-            "without stepping the engine through it), a "// &
-            "collision cycle certified to repeat for ever) and, for the first of "// &
-            "them, with the fallback alone (every rate and gap of a group insignificant). "// &
-            field("collapse", "collapse.answered")//" of "// &
-            field("collapse", "collapse.answered", check_value)//" rows end within the "// &
-            "collision cap (collapse_survey.tsv); the rest collapse in ways no certificate "// &
-            "recognises yet (a touching cascade whose merge neither the box nor a pattern "// &
-            "of every contact proves, as when patterns of parts of the block interleave "// &
-            "without repeating as a whole; open-gap collapses that repeat no pattern), "// &
-            "which the "// &
-            "fallback ends only slowly. Of the rows left unanswered "// &
-            "(collapse_unanswered.tsv, each with the command that runs it again), "// &
-            field("collapse", "collapse.unanswered_mass_ratio_1e4")//" have a largest mass "// &
-            "10^4 times the smallest or more and "// &
-            field("collapse", "collapse.unanswered_equal_masses")//" equal masses; "// &
-            field("collapse", "collapse.unanswered_at_one_instant")//" are left in a "// &
-            "cascade at one instant through a touching block, which, stepped further by "// &
-            "the engine's rule alone (in double precision, no limit taken on the way), is "// &
-            "over within the collisions allowed in "// &
-            field("collapse", "collapse.unanswered_cascade_over_further")//" of them "// &
-            "(collapse_unanswered.tsv, columns further_*; the row may go on after it).")
+            "e uniform in [0, 1], a fifth of the gaps closed) run to their end by every "// &
+            "collapse rule (docs/collapse.md). Every run ends with an answer and a bound: "// &
+            field("collapse", "collapse.exact")//" rows exact, "// &
+            field("collapse", "collapse.certified")//" certified, "// &
+            field("collapse", "collapse.tolerance")//" ended at tolerance, "// &
+            field("collapse", "collapse.bounded")//" bounded and "// &
+            field("collapse", "collapse.unresolved")//" unresolved of "// &
+            field("collapse", "collapse.answered", check_value)//" (collapse_survey.tsv); "// &
+            "the largest bound on the final velocities of a row with an answer is "// &
+            field("collapse", "collapse.v_bound_max")//" v0. The unresolved rows spent their "// &
+            "budget in cascades through touching blocks of light and heavy spheres whose "// &
+            "relaxation is slow; each is listed with the groups still active, the bound "// &
+            "reached on them and the command that runs it again "// &
+            "(collapse_unanswered.tsv).")
         call section("ecrit", "e_crit(p): critical restitution of the struck row of p spheres", &
             [character(len=60) :: "ecrit"], &
             "For every p equal spheres (a = d = v0 = 1) a scan of e decides each run by the "// &
