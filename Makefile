@@ -115,7 +115,7 @@ PNG := $(FIGURES:%=$(RESULTS)/%.png) $(RESULTS)/methods_work_precision.png \
 SVG := $(FIGURES:%=$(RESULTS)/%.svg) $(RESULTS)/methods_work_precision.svg \
        $(RESULTS)/methods_stability.svg $(SPACETIME:%=$(RESULTS)/%.svg)
 
-.PHONY: all help prereqs test test-long test-times mutants differential test-mpi check-layers study tables \
+.PHONY: all help prereqs test test-long test-times mutants differential readme-commands test-mpi check-layers study tables \
         figures bench callgrind check-results docs lint clean fuzz plot examples
 
 all: study
@@ -140,6 +140,9 @@ test: prereqs check-layers $(INC_STAMP) ## run both packages' tests; last line: 
 	awk '/^[0-9]+ passed, [0-9]+ failed$$/ { p += $$1; f += $$3; n++ } \
 		END { f += 2 - n; printf "%d passed, %d failed\n", p, f; exit f > 0 }' \
 		build/test-engine.log build/test-study.log && exit $$status
+
+readme-commands: prereqs ## run every command the README shows and check what it prints
+	python3 tools/readme-commands
 
 differential: prereqs ## the same random rows by REV (default HEAD) and the working tree
 	bash tools/differential $(or $(REV),HEAD) $(ARGS)
