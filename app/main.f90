@@ -1,5 +1,6 @@
 !> sphere-row: run one scene of a row of spheres and print the complete answer.
 program sphere_row_main
+    use, intrinsic :: iso_fortran_env, only: error_unit
     use sphere_row, only: qp, dp, scene_t, run_t, event_log_t, simulate, str, status_word, &
         status_invalid, status_normal, event_collision, event_collapse, itoa, auto_t, &
         simulate_auto, simulate_in_dp, answer_word, answer_certified, answer_unresolved, &
@@ -10,14 +11,15 @@ program sphere_row_main
     use sphere_row_format, only: short_text
     use sphere_row_read, only: printable
     use sphere_row_system, only: text_out_t
+    use sphere_row_watch, only: watch_t, event_header, stderr_is_terminal
     implicit none
     type(cli_t) :: cli
     type(scene_t) :: scene
     type(run_t) :: run
-    type(event_log_t) :: log
+    type(watch_t) :: watch
     type(error_t), allocatable :: error
     type(auto_t) :: auto
-    type(text_out_t) :: out
+    type(text_out_t), target :: out
     logical :: events
     character(len=:), allocatable :: precision_word
     !> Significant digits of a real(16) (str's).
@@ -30,11 +32,11 @@ program sphere_row_main
     events = cli%get_flag("events")
     call choose_precision(error)
     if (allocated(error)) call fail(cli%name, error)
-    call run_scene(scene, run)
+    call start_watch()
+    call run_scene(scene, run, watch)
     call check_run(error)
     if (allocated(error)) call fail(cli%name, error)
     call write_run()
-    if (events) call write_events()
     call out%finish(error)
     if (allocated(error)) call fail(cli%name, error)
 
@@ -70,18 +72,39 @@ contains
         if (precision_word == "dp") call check_scene_in_dp(cli, scene, error)
     end subroutine choose_precision
 
+    !> The watch of the run: the event table written row by row as the run
+    !> goes, its header first (and, for a long row, a line on stderr that says
+    !> what it costs: every row holds 2p + 6 numbers); progress lines on
+    !> stderr when it is a terminal.
+    subroutine start_watch()
+        real :: megabytes
+        character(len=16) :: text
+        watch%events = events
+        watch%progress = stderr_is_terminal()
+        watch%out => out
+        if (.not. events) return
+        call out%put(event_header(scene%p))
+        megabytes = real(2*scene%p + 6)*41.0/1.0e6
+        if (megabytes < 1.0) return
+        write (text, "(f0.1)") megabytes
+        write (error_unit, "(a)") "sphere-row: events = yes: every event row holds " &
+            //itoa(2*scene%p + 6)//" numbers, about "//trim(text)//" MB; a row of " &
+            //itoa(scene%p)//" spheres has at least "//itoa(scene%p - 1)//" collisions"
+    end subroutine start_watch
+
     !> Run `sc` in the precision asked for.
-    subroutine run_scene(sc, r)
+    subroutine run_scene(sc, r, w)
         type(scene_t), intent(in) :: sc
         type(run_t), intent(inout) :: r
+        type(watch_t), intent(inout), optional :: w
         select case (precision_word)
         case ("auto")
             call simulate_auto(sc, r, auto)
         case ("dp")
             call simulate_in_dp(sc, r)
         case default
-            if (events) then
-                call simulate(sc, r, log)
+            if (present(w)) then
+                call simulate(sc, r, observer=w)
             else
                 call simulate(sc, r)
             end if
@@ -95,7 +118,6 @@ contains
     !> so the same scene run with v0 = 1 gives the smallest v0 allowed.
     subroutine check_run(error)
         type(error_t), allocatable, intent(out) :: error
-        integer :: j
         character(len=:), allocatable :: kind_name, length_key
         kind_name = "real(16)"
         if (precision_word == "dp") kind_name = "real(8)"
@@ -119,14 +141,9 @@ contains
                 //"; allowed a shorter row")
             return
         end if
-        if (.not. events) return
-        do j = 0, log%n
-            if (finite([log%t(j), log%w(j), log%x1(j), log%dx1(j), log%y(:, j), &
-                log%dy(:, j)])) cycle
-            call fatal_error(error, "events = yes: event "//itoa(j)//" of this scene " &
-                //"overflows "//kind_name//"; allowed events = no")
-            return
-        end do
+        if (watch%overflow > 0) call fatal_error(error, "events = yes: event " &
+            //itoa(watch%overflow)//" of this scene overflows "//kind_name &
+            //"; allowed events = no")
     end subroutine check_run
 
     !> A run whose times overflow, refused naming v0 with the smallest v0
@@ -242,41 +259,6 @@ contains
         end do
     end subroutine write_numbered
 
-    !> The event record as TSV, one header row naming each column and its unit
-    !> (L: the unit of d and a; V: the unit of v0).
-    subroutine write_events()
-        character(len=*), parameter :: tab = achar(9)
-        integer :: j, k
-        character(len=:), allocatable :: line
-        line = "event"//tab//"kind"//tab//"first"//tab//"last"//tab//"t[L/V]"//tab//"w[V]" &
-            //tab//"x1[L]"//tab//"dx1[V]"
-        do k = 1, scene%p - 1
-            line = line//tab//"y"//itoa(k)//"[L]"
-        end do
-        do k = 1, scene%p - 1
-            line = line//tab//"dy"//itoa(k)//"[V]"
-        end do
-        call out%put(line)
-        do j = 0, log%n
-            select case (log%kind(j))
-            case (event_collision)
-                line = "collision"
-            case (event_collapse)
-                line = "collapse"
-            case default
-                line = "start"
-            end select
-            line = itoa(j)//tab//line//tab//itoa(log%first(j))//tab//itoa(log%last(j)) &
-                //tab//str(log%t(j))//tab//str(log%w(j))//tab//str(log%x1(j))//tab &
-                //str(log%dx1(j))
-            do k = 1, scene%p - 1
-                line = line//tab//str(log%y(k, j))
-            end do
-            do k = 1, scene%p - 1
-                line = line//tab//str(log%dy(k, j))
-            end do
-            call out%put(line)
-        end do
-    end subroutine write_events
+
 
 end program sphere_row_main

@@ -14,7 +14,7 @@ module sphere_row
         answer_unresolved, answer_word
     use sphere_row_format, only: real_str, short_text, itoa, real_text, int_text, &
         number_text_length
-    use sphere_row_engine_qp, only: scene_t, run_t, &
+    use sphere_row_engine_qp, only: scene_t, run_t, observer_t, state_now => state_now_wp, &
         event_log_t, scene_init_qp => scene_init_wp, &
         scene_check_qp => scene_check_wp, simulate_qp => simulate_wp, &
         gaps_at_qp => gaps_at_wp, kinetic_energy_qp => kinetic_energy_wp, &
@@ -50,7 +50,7 @@ module sphere_row
     public :: status_text, status_word_length, real_text, int_text, number_text_length
     public :: answer_exact, answer_certified, answer_tolerance, answer_bounded, &
         answer_unresolved, answer_word
-    public :: scene_t, run_t, event_log_t
+    public :: scene_t, run_t, event_log_t, observer_t, state_now
 #ifdef SPHERE_ROW_XDP
     public :: scene_xdp_t, run_xdp_t, event_log_xdp_t
 #endif

@@ -1,0 +1,152 @@
+!> What sphere-row watches of a run while it goes: the event table, written
+!> row by row as the events happen (constant memory, however long the run),
+!> and progress lines on stderr for a long run when stderr is a terminal.
+module sphere_row_watch
+    use, intrinsic :: iso_fortran_env, only: error_unit, int64
+    use, intrinsic :: iso_c_binding, only: c_int
+    use sphere_row, only: qp, run_t, observer_t, state_now, str, itoa, event_collision, &
+        event_collapse, real_text, number_text_length
+    use sphere_row_system, only: text_out_t
+    implicit none
+    private
+    public :: watch_t, event_header, stderr_is_terminal
+
+    !> Seconds between progress lines, and the collisions between looks at
+    !> the clock (a look costs about as much as a collision).
+    real, parameter :: progress_every = 2.0
+    integer, parameter :: look_every = 65536
+
+    !> The observer of sphere-row: rows of the event table onto `out` (if
+    !> `events`), progress lines on stderr (if `progress`).
+    type, extends(observer_t) :: watch_t
+        logical :: events = .false., progress = .false.
+        type(text_out_t), pointer :: out => null()
+        !> The first event whose row would hold a number beyond real(16) (0 if
+        !> none): no row is written from it on.
+        integer :: overflow = 0
+        integer(int64) :: started = 0, last = 0
+        real(qp), allocatable :: y(:)
+        !> The row being built, and its length so far.
+        character(len=:), allocatable :: row
+        integer :: at = 0
+    contains
+        procedure :: notify => watch_notify
+        procedure, private :: add_word => watch_add_word
+        procedure, private :: add_real => watch_add_real
+    end type watch_t
+
+    interface
+        !> `int isatty(int fd)` of the C library: 1 if fd is a terminal.
+        function c_isatty(fd) bind(C, name="isatty") result(yes)
+            import :: c_int
+            integer(c_int), value :: fd
+            integer(c_int) :: yes
+        end function c_isatty
+    end interface
+
+contains
+
+    !> True if standard error is a terminal (progress lines are for a person).
+    logical function stderr_is_terminal()
+        stderr_is_terminal = c_isatty(2_c_int) == 1_c_int
+    end function stderr_is_terminal
+
+    !> The header of the event table for p spheres (L: the unit of d and a;
+    !> V: the unit of v0).
+    function event_header(p) result(line)
+        integer, intent(in) :: p
+        character(len=:), allocatable :: line
+        character(len=*), parameter :: tab = achar(9)
+        integer :: k
+        line = "event"//tab//"kind"//tab//"first"//tab//"last"//tab//"t[L/V]"//tab//"w[V]" &
+            //tab//"x1[L]"//tab//"dx1[V]"
+        do k = 1, p - 1
+            line = line//tab//"y"//itoa(k)//"[L]"
+        end do
+        do k = 1, p - 1
+            line = line//tab//"dy"//itoa(k)//"[V]"
+        end do
+    end function event_header
+
+    !> An event: its row of the table, and now and then a progress line.
+    subroutine watch_notify(self, run, kind, first, last, w)
+        class(watch_t), intent(inout) :: self
+        type(run_t), intent(in) :: run
+        integer, intent(in) :: kind, first, last
+        real(qp), intent(in) :: w
+        real(qp) :: x1
+        integer(int64) :: now, rate
+        integer :: k
+        if (self%events .and. self%overflow == 0) then
+            if (.not. allocated(self%y)) allocate (self%y(size(run%y)))
+            call state_now(run, self%y, x1)
+            if (.not. all(abs([self%y, run%dy, x1, run%dx1, run%clock%t, w]) <= huge(x1))) &
+                self%overflow = run%n + run%limits%n
+        end if
+        if (self%events .and. self%overflow == 0) then
+            ! the row built in a buffer of its full length (appending to a
+            ! text would copy it once per number: quadratic in p)
+            if (.not. allocated(self%row)) allocate (character(len=(2*size(run%y) + 8) &
+                *(number_text_length + 1)) :: self%row)
+            self%at = 0
+            ! events so far: the start is 0, every collision and limit one more
+            call self%add_word(itoa(run%n + run%limits%n))
+            select case (kind)
+            case (event_collision)
+                call self%add_word("collision")
+            case (event_collapse)
+                call self%add_word("collapse")
+            case default
+                call self%add_word("start")
+            end select
+            call self%add_word(itoa(first))
+            call self%add_word(itoa(last))
+            call self%add_real(run%clock%t)
+            call self%add_real(w)
+            call self%add_real(x1)
+            call self%add_real(run%dx1)
+            do k = 1, size(self%y)
+                call self%add_real(self%y(k))
+            end do
+            do k = 1, size(run%dy)
+                call self%add_real(run%dy(k))
+            end do
+            call self%out%put(self%row(:self%at))
+        end if
+        if (.not. self%progress .or. kind /= event_collision) return
+        if (mod(run%n, look_every) /= 0) return
+        call system_clock(now, rate)
+        if (self%started == 0) then
+            self%started = now
+            self%last = now
+            return
+        end if
+        if (real(now - self%last)/real(rate) < progress_every) return
+        self%last = now
+        write (error_unit, "(a)") "sphere-row: "//itoa(run%n)//" collisions, t = " &
+            //str(run%clock%t)//", "//itoa(int((now - self%started)/rate))//" s"
+    end subroutine watch_notify
+
+    !> Append a field to the row (after a tab unless it is the first).
+    subroutine watch_add_word(self, word)
+        class(watch_t), intent(inout) :: self
+        character(len=*), intent(in) :: word
+        if (self%at > 0) then
+            self%at = self%at + 1
+            self%row(self%at:self%at) = achar(9)
+        end if
+        self%row(self%at + 1:self%at + len(word)) = word
+        self%at = self%at + len(word)
+    end subroutine watch_add_word
+
+    !> Append a real with every digit of real(16) (as str writes it).
+    subroutine watch_add_real(self, x)
+        class(watch_t), intent(inout) :: self
+        real(qp), intent(in) :: x
+        character(len=number_text_length) :: text
+        integer :: length
+        call real_text(x, precision(x) + 1, text, length)
+        call self%add_word(text(:length))
+    end subroutine watch_add_real
+
+end module sphere_row_watch
