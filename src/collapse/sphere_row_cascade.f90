@@ -9,6 +9,7 @@
 module sphere_row_cascade
     use, intrinsic :: iso_fortran_env, only: int64
     use sphere_row_kinds, only: dp
+    use sphere_row_policy, only: policy
     use sphere_row_pattern_dp, only: cascade_t, jump_period_most, jump_levels, cascade_start, &
         rule_choice, rescale, cascade_collide, pattern_window, period_map, pattern_holds, &
         pattern_contracts
@@ -21,29 +22,13 @@ module sphere_row_cascade
     !> The kind the cascade is run in, whatever the engine's.
     integer, parameter :: cascade_kind = dp
 
-    !> A try: its collisions at least and its work (collisions times contacts)
-    !> at most, doubled for each try before it that ran out of work (at
-    !> most order_doublings times), and the sequence length at which a period
-    !> is first looked for.
-    integer, parameter :: order_steps_least = 16384, order_work = 2**22, &
-        order_doublings = 4, order_first_check = 1024
-    !> A cascade that stops with every rate below the engine's insignificant
-    !> one merges by the engine's fallback rule, if no choice on the way was
-    !> closer than this many roundings per unit of work done.
-    real(dp), parameter :: quiet_noise = 16
-    !> A try that passes the engine's end of its cascade, where it may not
-    !> merge, goes on for at most this many times the work done up to there
-    !> (at least 2 order_first_check collisions): 256 leaves every row of the
-    !> collapse survey as it was without the bound, 16 does not.
-    integer, parameter :: quiet_more = 256
-    !> Jumps over a pattern repeated by part of the block (its longest period
-    !> and the most doublings of its repeat count are jump_period_most and
-    !> jump_levels of sphere_row_pattern.inc): its widest window of contacts,
-    !> the most distinct jumps (pattern and count) a try records, and the
-    !> whole periods a pattern runs before it is jumped (fewer: the search
-    !> costs more than it saves on the many short repeats; measured by the
-    !> collapse survey).
-    integer, parameter :: jump_window_most = 40, jump_kinds_most = 256, jump_need = 8
+    !> The tries' constants (policy_t says where each comes from).
+    integer, parameter :: order_steps_least = policy%order_steps_least, &
+        order_work = policy%order_work, order_doublings = policy%order_doublings, &
+        order_first_check = policy%order_first_check, quiet_more = policy%quiet_more, &
+        jump_window_most = policy%jump_window_most, &
+        jump_kinds_most = policy%jump_kinds_most, jump_need = policy%jump_need
+    real(dp), parameter :: quiet_noise = real(policy%quiet_noise, dp)
 
 contains
 

@@ -2,6 +2,7 @@
 !> the tries of sphere_row_cascade run in.
 module sphere_row_pattern_dp
     use sphere_row_kinds, only: ck => dp
+    use sphere_row_policy, only: policy
     implicit none
     private
     include "sphere_row_pattern.inc"

@@ -9,6 +9,7 @@ module sphere_row_pattern_fine
 #else
     use sphere_row_kinds, only: ck => qp
 #endif
+    use sphere_row_policy, only: policy
     implicit none
     private
     include "sphere_row_pattern.inc"

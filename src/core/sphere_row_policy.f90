@@ -99,6 +99,35 @@ module sphere_row_policy
         !> remembered, and the longest run of closed gaps looked at on a
         !> strike (tuned on the collapse survey).
         integer :: struck_most = 64, struck_run_most = 16
+
+        ! ---- a try: the cascade in the engine's order (sphere_row_cascade) ----
+        !> Its collisions at least and its work (collisions times contacts) at
+        !> most, doubled for each try before it that ran out of work (at most
+        !> order_doublings times), and the sequence length at which a period
+        !> is first looked for (measured for speed: a try's share of the run's
+        !> time stays bounded as they grow).
+        integer :: order_steps_least = 16384, order_work = 2**22, order_doublings = 4, &
+            order_first_check = 1024
+        !> A cascade that stops with every rate below tol v0 merges by the
+        !> fallback's rule if no choice on the way was closer than this many
+        !> roundings per unit of work (derived: a bound on the rounding of the
+        !> choices, with a factor 2 to spare).
+        real(qp) :: quiet_noise = 16.0_qp
+        !> A try that passes the engine's end of its cascade goes on for at most
+        !> this many times the work done up to there (tuned on the collapse
+        !> survey: 256 leaves every row as without the bound, 16 does not).
+        integer :: quiet_more = 256
+        !> Jumps over a pattern that part of the block repeats: the widest
+        !> window of contacts, the most distinct jumps a try records, and the
+        !> whole periods a pattern runs before it is jumped (measured on the
+        !> collapse survey: fewer costs more in searches than it saves); a
+        !> jump's longest period and the most doublings of its repeat count
+        !> (derived: 2^30 repeats is beyond any try's work).
+        integer :: jump_window_most = 40, jump_kinds_most = 256, jump_need = 8
+        integer :: jump_period_most = 16, jump_levels = 30
+        !> The periods a pattern's certificate runs (chosen: twice the cycle's
+        !> three, as the rate of settling is observed, not computed).
+        integer :: order_probes = 6
     end type policy_t
 
     !> The policy the engine runs with.
