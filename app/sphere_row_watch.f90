@@ -80,8 +80,9 @@ contains
         if (self%events .and. self%overflow == 0) then
             if (.not. allocated(self%y)) allocate (self%y(size(run%y)))
             call state_now(run, self%y, x1)
-            if (.not. all(abs([self%y, run%dy, x1, run%dx1, run%clock%t, w]) <= huge(x1))) &
+            if (.not. all(abs([self%y, run%dy, x1, run%dx1, run%clock%t, w]) <= huge(x1))) then
                 self%overflow = run%n + run%limits%n
+            end if
         end if
         if (self%events .and. self%overflow == 0) then
             ! the row built in a buffer of its full length (appending to a

@@ -14,6 +14,7 @@ module sphere_row_engine_sp
     include "sphere_row_types.inc"
 contains
     include "sphere_row_engine.inc"
+    include "sphere_row_rule.inc"
     include "sphere_row_scene.inc"
     include "sphere_row_calendar.inc"
     include "sphere_row_log.inc"

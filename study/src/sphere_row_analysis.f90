@@ -3,8 +3,8 @@
 !> restitution at which a collapse cycle stops being self-similar, and the final
 !> velocities of a fixed sequence as polynomials in e.
 module sphere_row_analysis
-    use sphere_row, only: qp, event_log_t, status_normal, status_invalid, event_collision, &
-        event_collapse
+    use sphere_row, only: qp, wp => qp, event_log_t, status_normal, status_invalid, &
+        event_collision, event_collapse
     use sphere_row_bisection, only: bisect
     implicit none
     private
@@ -110,7 +110,7 @@ contains
         integer, intent(in) :: pairs(:)
         real(qp), intent(out) :: a(:, :)
         integer :: j, k, q
-        real(qp) :: left, right
+        real(qp) :: left, right, spare(size(a, 2)), spare_right(size(a, 2))
         q = size(m) - 1
         a = 0.0_qp
         do j = 1, q
@@ -120,10 +120,18 @@ contains
             k = pairs(j)
             left = (1.0_qp + e)*m(k + 1)/(m(k) + m(k + 1))
             right = (1.0_qp + e)*m(k)/(m(k) + m(k + 1))
-            ! row operations: new dy(k-1) = dy(k-1) + left dy(k), ...
-            if (k > 1) a(k - 1, :) = a(k - 1, :) + left*a(k, :)
-            if (k < q) a(k + 1, :) = a(k + 1, :) + right*a(k, :)
-            a(k, :) = -e*a(k, :)
+            ! the collision (6) on the rows: new dy(k-1) = dy(k-1) + left dy(k), ...
+            spare = 0.0_qp
+            if (k > 1 .and. k < q) then
+                call collide_rates(a(k, :), a(k - 1, :), a(k + 1, :), left, right, e)
+            else if (k > 1) then
+                call collide_rates(a(k, :), a(k - 1, :), spare, left, right, e)
+            else if (k < q) then
+                call collide_rates(a(k, :), spare, a(k + 1, :), left, right, e)
+            else
+                spare_right = 0.0_qp
+                call collide_rates(a(k, :), spare, spare_right, left, right, e)
+            end if
         end do
     end subroutine rate_map
 
@@ -222,5 +230,7 @@ contains
             value = value*e + coef(j)
         end do
     end function poly_eval
+
+    include "../../src/engine/sphere_row_rule.inc"
 
 end module sphere_row_analysis

@@ -2,6 +2,7 @@
 !> methods that carry gaps and rates (ODE integration and time stepping).
 module sphere_row_impact
     use sphere_row, only: dp
+    use sphere_row_rule_dp, only: collide_at
     implicit none
     private
     public :: impact
@@ -18,16 +19,8 @@ contains
         integer, intent(in) :: k
         real(dp), intent(inout) :: dy(:)
         real(dp), intent(inout) :: dx1
-        real(dp) :: w, c
-        w = dy(k)
-        c = (1.0_dp + e)*w/(m(k) + m(k + 1))
-        if (k > 1) then
-            dy(k - 1) = dy(k - 1) + m(k + 1)*c
-        else
-            dx1 = dx1 + m(2)*c
-        end if
-        if (k < size(dy)) dy(k + 1) = dy(k + 1) + m(k)*c
-        dy(k) = -e*w
+        call collide_at(dy, k, (1.0_dp + e)*(m(k + 1)/(m(k) + m(k + 1))), &
+            (1.0_dp + e)*(m(k)/(m(k) + m(k + 1))), e, dx1)
     end subroutine impact
 
 end module sphere_row_impact

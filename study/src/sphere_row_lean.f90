@@ -73,8 +73,9 @@
 !> and the terms of second order in u dropped above (at most about
 !> lean_collisions_max times 10 u relative, 1e-12).
 module sphere_row_lean
-    use sphere_row, only: dp, qp, scene_t, run_t, scene_check, budget, simulate, status_normal, &
-        status_invalid
+    use sphere_row, only: dp, qp, wp => qp, scene_t, run_t, scene_check, budget, simulate, &
+        status_normal, status_invalid
+    use sphere_row_rule_dp, only: collide_at_dp => collide_at
     implicit none
     private
     public :: lean_row_t, lean_collisions_max
@@ -242,7 +243,7 @@ contains
         real(qp), intent(out) :: v1, dy(3)
         integer, intent(out) :: hist(lean_collisions_max), c
         logical, intent(out) :: deferred
-        real(qp) :: y(3), dt, ti, w, u, r
+        real(qp) :: y(3), dt, ti, r
         integer :: cls(3), runlen(period_check)
         integer :: i, k
         logical :: repeats
@@ -285,19 +286,9 @@ contains
             end do
             y(k) = 0.0_qp
             ! the collision (6): both neighbours take the same impulse
-            w = dy(k)
-            u = kick*w
-            if (k > 1) then
-                dy(k - 1) = dy(k - 1) + u
-                cls(k - 1) = classify(dy(k - 1))
-            else
-                v1 = v1 + u
-            end if
-            if (k < 3) then
-                dy(k + 1) = dy(k + 1) + u
-                cls(k + 1) = classify(dy(k + 1))
-            end if
-            dy(k) = neg_e*w
+            call collide_at(dy, k, kick, kick, -neg_e, v1)
+            if (k > 1) cls(k - 1) = classify(dy(k - 1))
+            if (k < 3) cls(k + 1) = classify(dy(k + 1))
             ! the engine's fallback looks for a quiet group only if this new
             ! rate (e |w| >= 0) is insignificant; a fast gap cannot get there
             if (cls(k) /= gap_fast) then
@@ -584,22 +575,21 @@ contains
         ew = s%ew(k)
         imp = kick*w
         eimp = kick*ew + abs(w)*ek + u64*abs(imp)
+        ! the collision itself (a failed certificate drops the run, whatever
+        ! the state), then the bounds of the rates it changed
+        call collide_at_dp(s%dy, k, kick, kick, e, s%v1)
         if (k > 1) then
-            s%dy(k - 1) = s%dy(k - 1) + imp
             s%ew(k - 1) = s%ew(k - 1) + eimp + u64*abs(s%dy(k - 1))
             call classify_bounded(self, s, k - 1, ok)
             if (.not. ok) return
         else
-            s%v1 = s%v1 + imp
             s%ev1 = s%ev1 + eimp + u64*abs(s%v1)
         end if
         if (k < 3) then
-            s%dy(k + 1) = s%dy(k + 1) + imp
             s%ew(k + 1) = s%ew(k + 1) + eimp + u64*abs(s%dy(k + 1))
             call classify_bounded(self, s, k + 1, ok)
             if (.not. ok) return
         end if
-        s%dy(k) = -e*w
         s%ew(k) = e*ew + u64*s%dy(k)
         s%closing(k) = .false.
         ok = s%dy(k) >= normal_floor .and. s%dy(k) - self%tv64 > 2*(s%ew(k) + self%etv)
@@ -616,5 +606,7 @@ contains
         real(qp), intent(in) :: x
         is_zero = iand(transfer(x, 0_bits_kind), huge(0_bits_kind)) == 0_bits_kind
     end function is_zero
+
+    include "../../src/engine/sphere_row_rule.inc"
 
 end module sphere_row_lean

@@ -4,7 +4,7 @@
 !> collapse, no ties; each step looks at every gap. For the e of c2 it gives
 !> the engine's v4 bit for bit (the tests compare it with the lean path).
 module sphere_row_minimal
-    use sphere_row, only: qp
+    use sphere_row, only: qp, wp => qp
     implicit none
     private
     public :: minimal_v4
@@ -16,7 +16,7 @@ contains
         real(qp), intent(in) :: e
         real(qp) :: v4
         real(qp), parameter :: tv = epsilon(1.0_qp)
-        real(qp) :: y(3), dy(3), v1, kick, dt, ti, w, u
+        real(qp) :: y(3), dy(3), v1, kick, dt, ti
         integer :: i, k
         y = 1.0_qp
         dy = [-1.0_qp, 0.0_qp, 0.0_qp]
@@ -39,17 +39,11 @@ contains
                 y(i) = max(0.0_qp, y(i) + dy(i)*dt)
             end do
             y(k) = 0.0_qp
-            w = dy(k)
-            u = kick*w
-            if (k > 1) then
-                dy(k - 1) = dy(k - 1) + u
-            else
-                v1 = v1 + u
-            end if
-            if (k < 3) dy(k + 1) = dy(k + 1) + u
-            dy(k) = -e*w
+            call collide_at(dy, k, kick, kick, e, v1)
         end do
         v4 = ((v1 + dy(1)) + dy(2)) + dy(3)
     end function minimal_v4
+
+    include "../../src/engine/sphere_row_rule.inc"
 
 end module sphere_row_minimal
