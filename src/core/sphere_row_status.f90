@@ -42,22 +42,23 @@ module sphere_row_status
     !> How good an answer is, from the best to the weakest; a run's answer is
     !> the weakest of its end and its collapse limits.
     !>
-    !> Exact: a finite sequence that separated (every rate >= 0), or a limit in
-    !> closed form (a plastic pool at e = 0): exact to the working precision.
+    !> An exact answer: a finite sequence that separated (every rate >= 0), or
+    !> a limit in closed form (a plastic pool at e = 0), exact to the working
+    !> precision.
     integer, parameter :: answer_exact = 1
-    !> Certified: a limit taken on a numerical certificate (a cycle's
+    !> A certified answer: a limit taken on a numerical certificate (a cycle's
     !> eigenvalues, an invariant box of ratios), exact to the working
     !> precision where the certificate holds.
     integer, parameter :: answer_certified = 2
-    !> Tolerance: the run ended with closing rates all below tol v0 (the
-    !> definition's criterion, "insignificant" relative velocities); the final
-    !> velocities lie within the stated bound of those given.
+    !> An answer at tolerance: the run ended with closing rates all below
+    !> tol v0 (the definition's criterion, "insignificant" relative
+    !> velocities); the final velocities lie within the stated bound.
     integer, parameter :: answer_tolerance = 3
-    !> Bounded: a group's limit taken where its velocities are known to lie
-    !> within the stated bound of its mean.
+    !> A bounded answer: a group's limit taken where its velocities are known
+    !> to lie within the stated bound of its mean.
     integer, parameter :: answer_bounded = 4
-    !> Unresolved: the work budget was spent; the groups still active are
-    !> named, with the bound reached on them.
+    !> An unresolved answer: the work budget was spent; the groups still
+    !> active are named, with the bound reached on them.
     integer, parameter :: answer_unresolved = 5
 
 contains
