@@ -130,13 +130,16 @@ prereqs: ## install missing gfortran, GSL, gnuplot, fpm (Debian, root) or say ho
 # the last line adds up both runs' `N passed, N failed` (a run that reports
 # no such line, e.g. because it did not build, counts as one failure)
 # (TEST_ARGS=long gives the deep versions: test-long)
+# The two packages' suites run side by side (the study's printed after the
+# engine's), one per core.
 test: prereqs check-layers $(INC_STAMP) ## run both packages' tests; last line: N passed, N failed
 	@mkdir -p build
 	@set -o pipefail; status=0; \
+	(cd study && $(FPM) test $(TEST_FLAGS) $(if $(TEST_ARGS),-- $(TEST_ARGS))) \
+		> build/test-study.log 2>&1 & study=$$!; \
 	$(FPM) test $(TEST_FLAGS) $(if $(TEST_ARGS),-- $(TEST_ARGS)) 2>&1 \
 		| tee build/test-engine.log || status=1; \
-	(cd study && $(FPM) test $(TEST_FLAGS) $(if $(TEST_ARGS),-- $(TEST_ARGS))) 2>&1 \
-		| tee build/test-study.log || status=1; \
+	wait $$study || status=1; cat build/test-study.log; \
 	awk '/^[0-9]+ passed, [0-9]+ failed$$/ { p += $$1; f += $$3; n++ } \
 		END { f += 2 - n; printf "%d passed, %d failed\n", p, f; exit f > 0 }' \
 		build/test-engine.log build/test-study.log && exit $$status

@@ -60,7 +60,10 @@ contains
     end subroutine define_keys
 
     !> The precision asked for (qp, dp or auto; the registry checked the
-    !> word); the event table only with qp; with dp, a scene real(8) carries.
+    !> word); the event table only with qp; with dp, a scene real(8) carries,
+    !> and unless tol is given, real(8)'s own resolution, its epsilon (the
+    !> default of real(16), 1.9e-34, is below what real(8) resolves, and a tol
+    !> below the kind's epsilon keeps the calendar of long rows off).
     subroutine choose_precision(error)
         type(error_t), allocatable, intent(out) :: error
         precision_word = cli%get_word("precision")
@@ -69,7 +72,9 @@ contains
                 //": allowed only with precision = qp")
             return
         end if
-        if (precision_word == "dp") call check_scene_in_dp(cli, scene, error)
+        if (precision_word /= "dp") return
+        call check_scene_in_dp(cli, scene, error)
+        if (.not. cli%given("tol")) scene%tol = real(epsilon(1.0_dp), qp)
     end subroutine choose_precision
 
     !> The watch of the run: the event table written row by row as the run
@@ -229,22 +234,30 @@ contains
     end subroutine write_run
 
     !> Lines `v<i> <v_i>`: every digit of real(16) where the answer is exact or
-    !> certified (bound 0), else the digits down to the bound's leading one.
+    !> certified (bound 0), else the digits down to the bound's leading one:
+    !> a velocity smaller than the bound's decade reads as 0 (or +-1) there.
     subroutine write_velocities(bound)
         real(qp), intent(in) :: bound
-        integer :: i, digits
+        integer :: i, digits, place
         character(len=:), allocatable :: text
+        character(len=16) :: buffer
         if (.not. bound > 0) then
             call write_numbered("v", run%v)
             return
         end if
+        place = floor(log10(bound))
         do i = 1, size(run%v)
-            digits = 1
-            if (abs(run%v(i)) > bound) digits = min(precision_digits, &
-                floor(log10(abs(run%v(i)))) - floor(log10(bound)) + 1)
-            text = real_str(run%v(i), digits)
-            ! one digit: 3E-02, not the edit descriptor's 3.E-02
-            if (digits == 1) text = text(:index(text, ".") - 1)//text(index(text, ".") + 1:)
+            digits = 0
+            if (run%v(i) /= 0) digits = min(precision_digits, &
+                floor(log10(abs(run%v(i)))) - place + 1)
+            if (digits >= 2) then
+                text = real_str(run%v(i), digits)
+            else
+                ! below the bound's decade: the value rounded to it, -1, 0 or 1
+                ! (or 1 to 10 at it) times 10^place, as 3E-02 or 0E-01
+                write (buffer, '(i0, "E", sp, i3.2)') nint(run%v(i)/10.0_qp**place), place
+                text = trim(buffer)
+            end if
             call out%put("v"//itoa(i)//" "//text)
         end do
     end subroutine write_velocities

@@ -34,7 +34,7 @@ contains
         character(len=200) :: msg
         call seed_random(8642, 7)
         checked = 0
-        do i = 1, cases(80, 1200)
+        do i = 1, cases(50, 1200)
             call random_number(u)
             p = 3 + int(8*u(1))
             call scene_init(scene, stat, msg, p=p, e=u(2), &
@@ -53,7 +53,7 @@ contains
                 str(maxval(abs(long%v - short%v)))//", beyond the bound "//str(short%v_bound))
             if (allocated(error)) return
         end do
-        call check(error, checked >= cases(12, 150), "unresolved bounds: too few rows checked: " &
+        call check(error, checked >= cases(10, 150), "unresolved bounds: too few rows checked: " &
             //itoa(checked))
     end subroutine test_unresolved_bound
 
@@ -342,7 +342,7 @@ contains
         character(len=200) :: msg
         integer, parameter :: cap = 5000
         integer :: scenes
-        scenes = cases(150, 1000)
+        scenes = cases(100, 1000)
         call seed_random(4321, 11)
         finite = 0
         limited = 0
