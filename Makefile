@@ -198,12 +198,15 @@ check-layers: ## check the layer rules (umbrella imports, per-kind imports, GSL)
 # trees of either compiler (gfortran, or mpifort for MPI=1; fpm names an
 # object after its path, src/engine/x.f90 -> src_engine_x.f90.o, and in the
 # study's tree the root's sources with a leading .._), and the linked
-# programs, which fpm does not relink on its own, so that fpm builds them again.
+# programs, which fpm does not relink on its own, so that fpm builds them again;
+# and the objects of the programs and tests, which a build of the library alone
+# (fpm build) would leave compiled against the old modules.
 $(INC_STAMP): $(wildcard src/*/*.inc study/src/*.inc)
 	@mkdir -p build
 	for f in $$(grep -rl --include='*.f90' '^ *include "' src study/src); do \
 		rm -f {,study/}build/{gfortran,mpifort}_*/*/{,.._}$$(echo $$f | tr / _).o*; done
 	rm -f {,study/}build/{gfortran,mpifort}_*/{app,test}/*
+	rm -f {,study/}build/{gfortran,mpifort}_*/*/{app,test,example}_*.o*
 	@touch $@
 
 # the study package's programs (with tsv-compare); the CLI is not needed here

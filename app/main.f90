@@ -228,25 +228,33 @@ contains
             end do
             call out%put("active"//groups)
         end if
-        call write_velocities(bound)
+        call write_velocities(merge(auto%v_bound, 0.0_qp, &
+            precision_word == "auto" .and. auto%certified))
         call write_numbered("x", run%x)
         call write_numbered("y", run%y)
     end subroutine write_run
 
-    !> Lines `v<i> <v_i>`: every digit of real(16) where the answer is exact or
-    !> certified (bound 0), else the digits down to the bound's leading one:
-    !> a velocity smaller than the bound's decade reads as 0 (or +-1) there.
-    subroutine write_velocities(bound)
-        real(qp), intent(in) :: bound
+    !> Lines `v<i> <v_i>`, each with the digits its bound leaves: every digit
+    !> of real(16) where it is 0 (exact or certified), else the digits down to
+    !> the bound's leading one; a velocity below that decade reads as 0 (or
+    !> +-1) there. A sphere's bound is its own (run%v_bounds) where the run
+    !> gives one, else the run's; never below `least` (with precision=auto,
+    !> the certificate's rounding bound).
+    subroutine write_velocities(least)
+        real(qp), intent(in) :: least
+        real(qp) :: bound
         integer :: i, digits, place
         character(len=:), allocatable :: text
         character(len=16) :: buffer
-        if (.not. bound > 0) then
-            call write_numbered("v", run%v)
-            return
-        end if
-        place = floor(log10(bound))
         do i = 1, size(run%v)
+            bound = run%v_bound
+            if (allocated(run%v_bounds)) bound = run%v_bounds(i)
+            bound = max(bound, least)
+            if (.not. bound > 0) then
+                call out%put("v"//itoa(i)//" "//str(run%v(i)))
+                cycle
+            end if
+            place = floor(log10(bound))
             digits = 0
             if (run%v(i) /= 0) digits = min(precision_digits, &
                 floor(log10(abs(run%v(i)))) - place + 1)

@@ -181,6 +181,7 @@ contains
         run%limits%t = real(low%limits%t, qp)
         run%answer = low%answer
         run%v_bound = real(low%v_bound, qp)
+        if (allocated(low%v_bounds)) run%v_bounds = real(low%v_bounds, qp)
         if (allocated(low%active)) run%active = low%active
         run%y = real(low%y, qp)
         run%dy = real(low%dy, qp)
