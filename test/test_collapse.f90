@@ -88,7 +88,45 @@ contains
                 " from the merge, beyond the bound "//str(bounded%v_bound))
             if (allocated(error)) return
         end do
+        ! the rule waits for vtol: at vtol a third of the bound b it reaches at
+        ! its first look (4096 collisions), it takes the cascade only later,
+        ! with a bound of at most vtol
+        scene%e = es(1)
+        scene%vtol = 0.999_qp
+        call simulate(scene, merged)
+        scene%vtol = merged%v_bound/3
+        call simulate(scene, bounded)
+        call check(error, bounded%answer == answer_bounded .and. bounded%n > merged%n .and. &
+            bounded%v_bound <= scene%vtol, "bounded cascade at vtol "//str(scene%vtol) &
+            //": taken after "//itoa(bounded%n)//" collisions (at vtol 0.999: " &
+            //itoa(merged%n)//") with the bound "//str(bounded%v_bound))
     end subroutine test_bounded_cascade
+
+    !> Three equal spheres, elastic, the budget spent after the first
+    !> collision (v = 0, 1, 0; the cradle ends at 0, 0, 1): each velocity moves
+    !> by 1 and its own cone bound is 1 + sqrt(2)/2 - 1/2 (the pool of 2, 3 at
+    !> 1/2, at distance sqrt(1/2) from the cone): the bound holds, and is
+    !> tight to that factor, not loose by more.
+    subroutine test_cone_bound_by_hand(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(scene_t) :: scene
+        type(run_t) :: short, long
+        integer :: stat
+        character(len=200) :: msg
+        real(qp), parameter :: expected = 0.5_qp + sqrt(0.5_qp)
+        call scene_init(scene, stat, msg, p=3, e=1.0_qp, max_collisions=1)
+        call simulate(scene, short)
+        scene%max_collisions = 0
+        call simulate(scene, long)
+        call check(error, short%answer == answer_unresolved .and. long%answer == answer_exact, &
+            "cone bound by hand: answers "//answer_word(short%answer)//" and " &
+            //answer_word(long%answer))
+        call check(error, all(abs(long%v - short%v) <= short%v_bounds), &
+            "cone bound by hand: a velocity beyond its bound")
+        call check(error, abs(short%v_bounds(2) - expected) <= 1.0e-30_qp .and. &
+            abs(short%v_bounds(3) - expected) <= 1.0e-30_qp, "cone bound by hand: bounds " &
+            //str(short%v_bounds(2))//" and "//str(short%v_bounds(3))//", expected "//str(expected))
+    end subroutine test_cone_bound_by_hand
 
     !> A run that ends with an insignificant closing rate says tolerance, and
     !> the same scene at a finer tolerance ends within the bound it gives:
@@ -161,6 +199,7 @@ contains
             new_unittest("unresolved_bound_holds", test_unresolved_bound), &
             new_unittest("bounded_cascade_within_its_bound", test_bounded_cascade), &
             new_unittest("tolerance_end_within_its_bound", test_tolerance_end), &
+            new_unittest("cone_bound_by_hand", test_cone_bound_by_hand), &
             new_unittest("cycle_limit_at_its_accumulation_time", test_cycle_time), &
             new_unittest("plastic_cascade_matches_fallback", test_plastic_cascade), &
             new_unittest("plastic_unequal_masses", test_plastic_unequal), &
