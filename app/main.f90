@@ -263,7 +263,12 @@ contains
             else
                 ! below the bound's decade: the value rounded to it, -1, 0 or 1
                 ! (or 1 to 10 at it) times 10^place, as 3E-02 or 0E-01
-                write (buffer, '(i0, "E", sp, i3.2)') nint(run%v(i)/10.0_qp**place), place
+                ! (the exponent in two places, or four beyond 99, as str's)
+                if (abs(place) < 100) then
+                    write (buffer, '(i0, "E", sp, i3.2)') nint(run%v(i)*10.0_qp**(-place)), place
+                else
+                    write (buffer, '(i0, "E", sp, i5.4)') nint(run%v(i)*10.0_qp**(-place)), place
+                end if
                 text = trim(buffer)
             end if
             call out%put("v"//itoa(i)//" "//text)

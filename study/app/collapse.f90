@@ -7,7 +7,7 @@
 !> every invariant holds; and each row left unresolved, with the groups still
 !> active, the bound reached on them and the command that runs it again.
 program c12_collapse
-    use, intrinsic :: iso_fortran_env, only: int64
+    use, intrinsic :: iso_fortran_env, only: int64, error_unit
     use sphere_row, only: qp, scene_t, run_t, simulate, str, itoa, real_str, answer_word, &
         answer_exact, answer_certified, answer_tolerance, answer_bounded, answer_unresolved
     use sphere_row_survey, only: survey_t, survey_open, survey_close, survey_scene, &
@@ -33,6 +33,7 @@ program c12_collapse
     type :: outcome_t
         integer :: answer = 0
         logical :: broken = .false.
+        character(len=16) :: why = ""
         integer(int64) :: n = 0
         real(qp) :: bound = 0
         real :: seconds = 0
@@ -101,6 +102,14 @@ contains
             call one_run(scene, i, outcome(rule, i))
         end do
         !$omp end parallel do
+        ! a broken invariant is named, with the command that runs the row again
+        do rule = every, fallback
+            do i = 1, merge(n, n_before, rule == every)
+                if (outcome(rule, i)%broken) write (error_unit, "(a)") "c12-collapse: row " &
+                    //itoa(i)//" ("//trim(rule_names(rule))//") breaks "// &
+                    trim(outcome(rule, i)%why)//": "//scene_command(rows(i))
+            end do
+        end do
     end subroutine run_survey
 
     !> Run one row and keep what the tables need of it (an unresolved row's
@@ -123,6 +132,7 @@ contains
         result%n = run%n
         call check_invariants(scene, run, slack, per_collision, why)
         result%broken = why /= ""
+        result%why = why
         if (run%answer /= answer_unresolved .or. .not. scene%closed_form_limits) return
         call result%row%add(index)
         call result%row%add(scene%p)
