@@ -275,7 +275,8 @@ def check_output(out, err, events):
             return "not a number: %r" % line[:200]
         if key == b"v_bound" and not (val == b"rounding" or NUMBER.match(val)):
             return "v_bound neither rounding nor a number: %r" % line[:200]
-    for need in (b"collisions", b"t_end", b"status", b"precision", b"answer", b"v_bound", b"v1", b"x1", b"y1"):
+    for need in (b"collisions", b"t_end", b"status", b"precision", b"answer", b"v_bound",
+                 b"v1", b"x1", b"y1"):
         if need not in keys:
             return "no line %s" % need.decode()
     if events and not table:
