@@ -104,7 +104,7 @@ contains
 
     !> Three equal spheres, elastic, the budget spent after the first
     !> collision (v = 0, 1, 0; the cradle ends at 0, 0, 1): each velocity moves
-    !> by 1 and its own cone bound is 1 + sqrt(2)/2 - 1/2 (the pool of 2, 3 at
+    !> by 1 and its own cone bound is 1/2 + sqrt(1/2) (the pool of 2, 3 at
     !> 1/2, at distance sqrt(1/2) from the cone): the bound holds, and is
     !> tight to that factor, not loose by more.
     subroutine test_cone_bound_by_hand(error)
