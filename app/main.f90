@@ -60,10 +60,7 @@ contains
     end subroutine define_keys
 
     !> The precision asked for (qp, dp or auto; the registry checked the
-    !> word); the event table only with qp; with dp, a scene real(8) carries,
-    !> and unless tol is given, real(8)'s own resolution, its epsilon (the
-    !> default of real(16), 1.9e-34, is below what real(8) resolves, and a tol
-    !> below the kind's epsilon keeps the calendar of long rows off).
+    !> word); the event table only with qp; with dp, a scene real(8) carries.
     subroutine choose_precision(error)
         type(error_t), allocatable, intent(out) :: error
         precision_word = cli%get_word("precision")
@@ -72,9 +69,7 @@ contains
                 //": allowed only with precision = qp")
             return
         end if
-        if (precision_word /= "dp") return
-        call check_scene_in_dp(cli, scene, error)
-        if (.not. cli%given("tol")) scene%tol = real(epsilon(1.0_dp), qp)
+        if (precision_word == "dp") call check_scene_in_dp(cli, scene, error)
     end subroutine choose_precision
 
     !> The watch of the run: the event table written row by row as the run
@@ -195,7 +190,7 @@ contains
         if (precision_word == "auto") then
             call out%put("precision "//auto%answered)
             call out%put("certified "//trim(merge("yes", "no ", auto%certified)))
-            if (auto%certified) bound = max(bound, auto%v_bound)
+            if (auto%certified) bound = bound + auto%v_bound
             if (auto%answered /= "dp") call out%put("not_dp "//auto%why_not_dp)
         else
             call out%put("precision "//precision_word)
@@ -235,22 +230,22 @@ contains
     end subroutine write_run
 
     !> Lines `v<i> <v_i>`, each with the digits its bound leaves: every digit
-    !> of real(16) where it is 0 (exact or certified), else the digits down to
-    !> the bound's leading one; a velocity below that decade reads as 0 (or
-    !> +-1) there. A sphere's bound is its own (run%v_bounds) where the run
-    !> gives one, else the run's; never below `least` (with precision=auto,
-    !> the certificate's rounding bound).
-    subroutine write_velocities(least)
-        real(qp), intent(in) :: least
+    !> of real(16) where it is 0 (exact or certified) or not finite, else the
+    !> digits down to the bound's leading one; a velocity below that decade
+    !> reads rounded there, as -1, 0 or 1 times its power of ten. A sphere's
+    !> bound is its own (run%v_bounds) where the run gives one, else the
+    !> run's, plus `extra` (with precision=auto, the certificate's bound).
+    subroutine write_velocities(extra)
+        real(qp), intent(in) :: extra
         real(qp) :: bound
-        integer :: i, digits, place
+        integer :: i, digits, place, q
         character(len=:), allocatable :: text
         character(len=16) :: buffer
         do i = 1, size(run%v)
             bound = run%v_bound
             if (allocated(run%v_bounds)) bound = run%v_bounds(i)
-            bound = max(bound, least)
-            if (.not. bound > 0) then
+            bound = bound + extra
+            if (.not. (bound > 0 .and. bound <= huge(bound))) then
                 call out%put("v"//itoa(i)//" "//str(run%v(i)))
                 cycle
             end if
@@ -261,13 +256,18 @@ contains
             if (digits >= 2) then
                 text = real_str(run%v(i), digits)
             else
-                ! below the bound's decade: the value rounded to it, -1, 0 or 1
-                ! (or 1 to 10 at it) times 10^place, as 3E-02 or 0E-01
-                ! (the exponent in two places, or four beyond 99, as str's)
+                ! (10^-place in two factors: each within range at every scale)
+                q = nint(run%v(i)*10.0_qp**(-place/2)*10.0_qp**(place/2 - place))
+                ! (0.96 at a bound's decade of 0.1 rounds to 1E+00, not 10E-01)
+                if (abs(q) == 10) then
+                    q = q/10
+                    place = place + 1
+                end if
+                ! the exponent in two places, or four beyond 99, as str's
                 if (abs(place) < 100) then
-                    write (buffer, '(i0, "E", sp, i3.2)') nint(run%v(i)*10.0_qp**(-place)), place
+                    write (buffer, '(i0, "E", sp, i3.2)') q, place
                 else
-                    write (buffer, '(i0, "E", sp, i5.4)') nint(run%v(i)*10.0_qp**(-place)), place
+                    write (buffer, '(i0, "E", sp, i5.4)') q, place
                 end if
                 text = trim(buffer)
             end if

@@ -48,8 +48,7 @@ contains
             checked = checked + 1
             call check(error, size(short%active, 2) > 0, "unresolved row "//itoa(i)// &
                 ": no active group named")
-            call check(error, all(abs(long%v - short%v) <= short%v_bounds*(1 + 1.0e-20_qp)) &
-                .and. maxval(short%v_bounds) == short%v_bound, &
+            call check(error, all(abs(long%v - short%v) <= short%v_bounds*(1 + 1.0e-20_qp)), &
                 "unresolved row "//itoa(i)//": velocities moved by "// &
                 str(maxval(abs(long%v - short%v)))//", beyond their bounds (largest " &
                 //str(short%v_bound)//")")
@@ -151,7 +150,8 @@ contains
             all(abs(fine%v - coarse%v) <= coarse%v_bounds*(1 + 1.0e-20_qp)) .and. &
             maxval(coarse%v_bounds(2:)) < 1.0e-39_qp, &
             "tolerance end: velocities "//str(maxval(abs(fine%v - coarse%v)))// &
-            " from the finer run, beyond the bound "//str(coarse%v_bound))
+            " from the finer run, beyond their bounds, or the bounds of spheres 2..4 " &
+            //"not below 1e-39")
     end subroutine test_tolerance_end
 
     !> A certified cycle's limit is taken at the accumulation time of its

@@ -243,7 +243,9 @@ def make_case(rng, index):
     return Case([junk_bytes(rng, rng.randint(1, 20)) for _ in range(rng.randint(1, 3))])
 
 
-NUMBER = re.compile(rb"^-?\d+(\.\d+)?E[+-]\d+$")
+NUMBER = re.compile(rb"^-?\d\.\d+E[+-]\d+$")
+# a velocity printed down to its bound's decade: 2.5E-01, or 3E-02, 0E-01
+VELOCITY = re.compile(rb"^-?\d(\.\d+)?E[+-]\d+$")
 LINE = re.compile(rb"^[a-z_]+[0-9]* \S.*$")
 
 
@@ -271,8 +273,10 @@ def check_output(out, err, events):
             return "malformed line: %r" % line[:200]
         key, val = line.split(b" ", 1)
         keys.add(key)
-        if re.match(rb"^(t_end|collapse_t|[vxy]\d+)$", key) and not NUMBER.match(val):
+        if re.match(rb"^(t_end|collapse_t|[xy]\d+)$", key) and not NUMBER.match(val):
             return "not a number: %r" % line[:200]
+        if re.match(rb"^v\d+$", key) and not VELOCITY.match(val):
+            return "not a velocity: %r" % line[:200]
         if key == b"v_bound" and not (val == b"rounding" or NUMBER.match(val)):
             return "v_bound neither rounding nor a number: %r" % line[:200]
     for need in (b"collisions", b"t_end", b"status", b"precision", b"answer", b"v_bound",
