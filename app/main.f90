@@ -223,8 +223,7 @@ contains
             end do
             call out%put("active"//groups)
         end if
-        call write_velocities(merge(auto%v_bound, 0.0_qp, &
-            precision_word == "auto" .and. auto%certified))
+        call write_velocities()
         call write_numbered("x", run%x)
         call write_numbered("y", run%y)
     end subroutine write_run
@@ -234,9 +233,8 @@ contains
     !> digits down to the bound's leading one; a velocity below that decade
     !> reads rounded there, as -1, 0 or 1 times its power of ten. A sphere's
     !> bound is its own (run%v_bounds) where the run gives one, else the
-    !> run's, plus `extra` (with precision=auto, the certificate's bound).
-    subroutine write_velocities(extra)
-        real(qp), intent(in) :: extra
+    !> run's, plus with precision=auto the certificate's bound of it.
+    subroutine write_velocities()
         real(qp) :: bound
         integer :: i, digits, place, q
         character(len=:), allocatable :: text
@@ -244,7 +242,9 @@ contains
         do i = 1, size(run%v)
             bound = run%v_bound
             if (allocated(run%v_bounds)) bound = run%v_bounds(i)
-            bound = bound + extra
+            if (precision_word == "auto" .and. auto%certified) then
+                if (allocated(auto%v_bounds)) bound = bound + auto%v_bounds(i)
+            end if
             if (.not. (bound > 0 .and. bound <= huge(bound))) then
                 call out%put("v"//itoa(i)//" "//str(run%v(i)))
                 cycle

@@ -28,6 +28,8 @@ module sphere_row_auto
         !> Largest bound on a final velocity [v0 units of the scene] (0 if not
         !> certified), and why the real64 run was not enough (blank if it was).
         real(qp) :: v_bound = 0.0_qp
+        !> The same bound for each sphere (size p where certified).
+        real(qp), allocatable :: v_bounds(:)
         character(len=:), allocatable :: why_not_dp
     end type auto_t
 
@@ -66,7 +68,8 @@ contains
                 call from_dp(run_low, run)
                 auto%answered = "dp"
                 auto%certified = .true.
-                auto%v_bound = real(maxval(bounds_low%v), qp)
+                auto%v_bounds = real(bounds_low%v, qp)
+                auto%v_bound = maxval(auto%v_bounds)
                 if (present(pairs)) pairs = pack(log_low%first(1:log_low%n), &
                     log_low%kind(1:log_low%n) == event_collision)
                 return
@@ -84,7 +87,10 @@ contains
         end if
         call simulate_certified_wp(scene, check, bounds)
         auto%certified = bounds%certified .and. check%n == run%n .and. check%status == run%status
-        if (auto%certified) auto%v_bound = maxval(bounds%v)
+        if (auto%certified) then
+            auto%v_bounds = bounds%v
+            auto%v_bound = maxval(auto%v_bounds)
+        end if
     end subroutine simulate_auto
 
     !> Every result and bound of a real64 run is finite.
