@@ -10,8 +10,8 @@ program sphere_row_main
     use sphere_row_error, only: error_t, fatal_error
     use sphere_row_format, only: short_text
     use sphere_row_read, only: printable
-    use sphere_row_system, only: text_out_t
-    use sphere_row_watch, only: watch_t, event_header, stderr_is_terminal
+    use sphere_row_system, only: text_out_t, stderr_is_terminal
+    use sphere_row_watch, only: watch_t, event_header
     implicit none
     type(cli_t) :: cli
     type(scene_t) :: scene

@@ -3,13 +3,12 @@
 !> and progress lines on stderr for a long run when stderr is a terminal.
 module sphere_row_watch
     use, intrinsic :: iso_fortran_env, only: error_unit, int64
-    use, intrinsic :: iso_c_binding, only: c_int
     use sphere_row, only: qp, run_t, observer_t, state_now, str, itoa, event_collision, &
         event_collapse, real_text, number_text_length
     use sphere_row_system, only: text_out_t
     implicit none
     private
-    public :: watch_t, event_header, stderr_is_terminal
+    public :: watch_t, event_header
 
     !> Seconds between progress lines, and the collisions between looks at
     !> the clock (a look costs about as much as a collision).
@@ -35,21 +34,7 @@ module sphere_row_watch
         procedure, private :: add_real => watch_add_real
     end type watch_t
 
-    interface
-        !> `int isatty(int fd)` of the C library: 1 if fd is a terminal.
-        function c_isatty(fd) bind(C, name="isatty") result(yes)
-            import :: c_int
-            integer(c_int), value :: fd
-            integer(c_int) :: yes
-        end function c_isatty
-    end interface
-
 contains
-
-    !> True if standard error is a terminal (progress lines are for a person).
-    logical function stderr_is_terminal()
-        stderr_is_terminal = c_isatty(2_c_int) == 1_c_int
-    end function stderr_is_terminal
 
     !> The header of the event table for p spheres (L: the unit of d and a;
     !> V: the unit of v0).

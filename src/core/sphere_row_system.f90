@@ -16,6 +16,7 @@ module sphere_row_system
     private
     public :: path_kind, path_missing, path_regular, path_directory, path_other
     public :: rename_file, remove_file, system_error_text, text_out_t, read_some, read_block
+    public :: stderr_is_terminal
 
     !> Kinds of what a path names (path_kind).
     integer, parameter :: path_missing = 0, path_regular = 1, path_directory = 2, path_other = 3
@@ -90,9 +91,22 @@ module sphere_row_system
             type(c_ptr), value :: text
             integer(c_size_t), value :: n
         end subroutine c_error_text
+
+        !> `int isatty(int fd)` of the C library (unistd.h): 1 if fd is a terminal.
+        function c_isatty(fd) result(yes) bind(c, name="isatty")
+            import :: c_int
+            integer(c_int), value :: fd
+            integer(c_int) :: yes
+        end function c_isatty
     end interface
 
 contains
+
+    !> True if standard error (file descriptor 2) is a terminal: progress
+    !> lines of long runs are for a person watching, never for a log.
+    logical function stderr_is_terminal()
+        stderr_is_terminal = c_isatty(2_c_int) == 1_c_int
+    end function stderr_is_terminal
 
     !> What `path` names: path_regular, path_directory, path_other (a device,
     !> a FIFO, a socket) or path_missing (nothing, or nothing this process

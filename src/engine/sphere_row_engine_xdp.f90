@@ -13,21 +13,6 @@ module sphere_row_engine_xdp
         answer_certified, answer_tolerance, answer_bounded, answer_unresolved
     implicit none
     private
-    include "sphere_row_types.inc"
-contains
-    include "sphere_row_engine.inc"
-    include "sphere_row_rule.inc"
-    include "sphere_row_scene.inc"
-    include "sphere_row_calendar.inc"
-    include "sphere_row_log.inc"
-    include "sphere_row_certified.inc"
-    include "../collapse/sphere_row_rules.inc"
-    include "../collapse/sphere_row_plastic.inc"
-    include "../collapse/sphere_row_block.inc"
-    include "../collapse/sphere_row_box.inc"
-    include "../collapse/sphere_row_fallback.inc"
-    include "../collapse/sphere_row_cycle.inc"
-    include "../collapse/sphere_row_bounds.inc"
-    include "../collapse/sphere_row_bounded.inc"
+    include "sphere_row_instance.inc"
 end module sphere_row_engine_xdp
 #endif

@@ -29,7 +29,7 @@ program c12_c2
     use sphere_row_c2_tables, only: c2_sample_t, c2_statistics, c2_write_tables
     use sphere_row_study_cli, only: cli_t, add_scene_keys, start_program, read_keys, fail, &
         say, stop_unless_normal, add_precision_key, precision_is_auto
-    use sphere_row_terminal, only: stderr_is_terminal
+    use sphere_row_system, only: stderr_is_terminal
     use sphere_row_error, only: error_t
     implicit none
 
