@@ -11,7 +11,8 @@
 #   make plot            ARGS="p=30 e=0.6": the space-time diagram of any scene, plot.png
 #                        and plot.svg (PLOT=name for another name)
 #   make examples        build and run every example program (example/)
-#   make bench           speed: the cost study (cost.tsv, its figure) and bench.tsv
+#   make bench           speed: the cost study (cost.tsv, the engine against the tight
+#                        loop in cost_vs_loop.tsv, their figures) and bench.tsv
 #   make check-results   regenerate the study elsewhere and compare with results/
 #   make docs            API documentation (FORD) in build/docs/index.html
 #   make lint            the Fortran linter fortitude, rules in fortitude.toml
@@ -34,6 +35,7 @@ SHELL := /bin/bash
 FPM ?= fpm
 RESULTS ?= results
 BUILD_STAMP := build/.release-stamp
+CLI_STAMP := build/.release-cli-stamp
 INC_STAMP := build/.inc-stamp
 BIN := build/release/bin
 # the engine (root package) and the study package that uses it
@@ -92,7 +94,7 @@ COLLAPSE := $(RESULTS)/collapse_survey.tsv $(RESULTS)/collapse_by_p.tsv \
 ECRIT := $(RESULTS)/ecrit.tsv $(RESULTS)/ecrit_answers.tsv
 # machine-dependent timings (like bench.tsv): made by `make bench`, not by
 # `make study`, and not compared by check-results
-COST := $(RESULTS)/cost.tsv $(RESULTS)/cost_summary.tsv
+COST := $(RESULTS)/cost.tsv $(RESULTS)/cost_summary.tsv $(RESULTS)/cost_vs_loop.tsv
 TABLES := $(A1) $(A2) $(B1) $(B2) $(C1) $(C2) $(METHODS) $(COLLAPSE) $(ECRIT)
 ANSWERS := $(filter %_answers.tsv,$(TABLES))
 
@@ -172,8 +174,9 @@ tables: $(TABLES) ## the study's tables only
 
 figures: $(PNG) $(SVG) ## the study's figures only
 
-bench: prereqs ## speed: cost per collision against p (cost.tsv, cost.png) and bench.tsv
-	@$(MAKE) --no-print-directory $(RESULTS)/bench.tsv $(RESULTS)/cost.png $(RESULTS)/cost.svg
+bench: prereqs ## speed: cost per collision against p and against the tight loop (cost*.tsv, figures) and bench.tsv
+	@$(MAKE) --no-print-directory $(RESULTS)/bench.tsv $(RESULTS)/cost.png $(RESULTS)/cost.svg \
+		$(RESULTS)/cost_loop.png $(RESULTS)/cost_loop.svg
 
 # exact counts, not times: valgrind is installed on demand, so `make test` and
 # `make study` never need it; bench.tsv copies the last measured counts
@@ -197,14 +200,16 @@ check-layers: ## check the layer rules (umbrella imports, per-kind imports, GSL)
 # drop the objects of every source that includes one, in both packages' build
 # trees of either compiler (gfortran, or mpifort for MPI=1; fpm names an
 # object after its path, src/engine/x.f90 -> src_engine_x.f90.o, and in the
-# study's tree the root's sources with a leading .._), and the linked
+# study's tree the root's sources with a leading .._ and its own without
+# study/: study/src/x.f90 -> src_x.f90.o), and the linked
 # programs, which fpm does not relink on its own, so that fpm builds them again;
 # and the objects of the programs and tests, which a build of the library alone
 # (fpm build) would leave compiled against the old modules.
 $(INC_STAMP): $(wildcard src/*/*.inc study/src/*.inc)
 	@mkdir -p build
 	for f in $$(grep -rl --include='*.f90' '^ *include "' src study/src); do \
-		rm -f {,study/}build/{gfortran,mpifort}_*/*/{,.._}$$(echo $$f | tr / _).o*; done
+		rm -f {,study/}build/{gfortran,mpifort}_*/*/{,.._}$$(echo $$f | tr / _).o* \
+			study/build/{gfortran,mpifort}_*/*/$$(echo $${f#study/} | tr / _).o*; done
 	rm -f {,study/}build/{gfortran,mpifort}_*/{app,test}/*
 	rm -f {,study/}build/{gfortran,mpifort}_*/*/{app,test,example}_*.o*
 	@touch $@
@@ -212,6 +217,11 @@ $(INC_STAMP): $(wildcard src/*/*.inc study/src/*.inc)
 # the study package's programs (with tsv-compare); the CLI is not needed here
 $(BUILD_STAMP): $(SOURCES) $(INC_STAMP)
 	cd study && $(FPM) install --profile release $(KIND_FLAGS) --prefix $(abspath build/release)
+	@touch $@
+
+# the sphere-row CLI beside them, for the bench's whole-process timings
+$(CLI_STAMP): $(SOURCES) $(INC_STAMP) $(wildcard app/*.f90)
+	$(FPM) install --profile release $(KIND_FLAGS) --prefix $(abspath build/release)
 	@touch $@
 
 # the same with OpenMPI's compiler wrapper and the MPI code of the ranks
@@ -257,7 +267,7 @@ $(COST) &: $(BUILD_STAMP)
 $(RESULTS)/answers.tsv $(RESULTS)/summary.md &: $(ANSWERS) $(BUILD_STAMP)
 	$(BIN)/c12-summary out=$(RESULTS)
 
-$(RESULTS)/bench.tsv: $(BUILD_STAMP) $(TABLES) $(COST)
+$(RESULTS)/bench.tsv: $(BUILD_STAMP) $(CLI_STAMP) $(TABLES) $(COST)
 	$(BIN)/c12-bench out=$(RESULTS)
 
 # figures: the script is a prerequisite of its figure
@@ -277,6 +287,7 @@ $(RESULTS)/c2_histogram.png $(RESULTS)/c2_histogram.svg: $(C2)
 $(RESULTS)/c2_convergence.png $(RESULTS)/c2_convergence.svg: $(C2)
 $(RESULTS)/ecrit.png $(RESULTS)/ecrit.svg: $(ECRIT)
 $(RESULTS)/cost.png $(RESULTS)/cost.svg: $(COST)
+$(RESULTS)/cost_loop.png $(RESULTS)/cost_loop.svg: $(COST)
 
 # the space-time diagrams: one run of c12-spacetime writes a scene's four
 # tables, the script draws both formats in one run

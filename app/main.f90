@@ -1,6 +1,6 @@
 !> sphere-row: run one scene of a row of spheres and print the complete answer.
 program sphere_row_main
-    use, intrinsic :: iso_fortran_env, only: error_unit
+    use, intrinsic :: iso_fortran_env, only: error_unit, int64
     use sphere_row, only: qp, dp, scene_t, run_t, event_log_t, simulate, str, status_word, &
         status_invalid, status_normal, event_collision, event_collapse, itoa, auto_t, &
         simulate_auto, simulate_in_dp, answer_word, answer_certified, answer_unresolved, &
@@ -8,7 +8,7 @@ program sphere_row_main
     use sphere_row_cli, only: cli_t, read_command_line, fail
     use sphere_row_scene_keys, only: add_scene_keys, scene_from_cli, check_scene_in_dp
     use sphere_row_error, only: error_t, fatal_error
-    use sphere_row_format, only: short_text
+    use sphere_row_format, only: short_text, real_text, int_text, number_text_length
     use sphere_row_read, only: printable
     use sphere_row_system, only: text_out_t, stderr_is_terminal
     use sphere_row_watch, only: watch_t, event_header
@@ -60,7 +60,8 @@ contains
     end subroutine define_keys
 
     !> The precision asked for (qp, dp or auto; the registry checked the
-    !> word); the event table only with qp; with dp, a scene real(8) carries.
+    !> word); the event table only with qp; with dp, a scene real(8) carries,
+    !> and real(8)'s epsilon as tol unless tol is given.
     subroutine choose_precision(error)
         type(error_t), allocatable, intent(out) :: error
         precision_word = cli%get_word("precision")
@@ -69,7 +70,11 @@ contains
                 //": allowed only with precision = qp")
             return
         end if
-        if (precision_word == "dp") call check_scene_in_dp(cli, scene, error)
+        if (precision_word /= "dp") return
+        call check_scene_in_dp(cli, scene, error)
+        ! real(8) resolves rates and gaps to its own epsilon, as real(16) to its
+        ! own; and at that tol the calendar of a long row stays on
+        if (.not. cli%given("tol")) scene%tol = real(epsilon(1.0_dp), qp)
     end subroutine choose_precision
 
     !> The watch of the run: the event table written row by row as the run
@@ -246,13 +251,12 @@ contains
                 if (allocated(auto%v_bounds)) bound = bound + auto%v_bounds(i)
             end if
             if (.not. (bound > 0 .and. bound <= huge(bound))) then
-                call out%put("v"//itoa(i)//" "//str(run%v(i)))
+                call put_numbered("v", i, run%v(i))
                 cycle
             end if
-            place = floor(log10(bound))
+            place = decade(bound)
             digits = 0
-            if (run%v(i) /= 0) digits = min(precision_digits, &
-                floor(log10(abs(run%v(i)))) - place + 1)
+            if (run%v(i) /= 0) digits = min(precision_digits, decade(abs(run%v(i))) - place + 1)
             if (digits >= 2) then
                 text = real_str(run%v(i), digits)
             else
@@ -275,15 +279,54 @@ contains
         end do
     end subroutine write_velocities
 
+    !> floor(log10(x)) of x > 0: from real(8)'s log10 where x is in its range
+    !> and the logarithm is not within 1e-9 of an integer (its rounding, about
+    !> 1e-16, cannot then move the floor), else from real(16)'s, twenty times
+    !> slower (two of them per sphere of a long row's answer).
+    pure integer function decade(x)
+        real(qp), intent(in) :: x
+        real(dp) :: l
+        if (x >= tiny(1.0_dp) .and. x <= huge(1.0_dp)) then
+            l = log10(real(x, dp))
+            if (abs(l - anint(l)) > 1.0e-9_dp) then
+                decade = floor(l)
+                return
+            end if
+        end if
+        decade = floor(log10(x))
+    end function decade
+
     !> Lines `<name><i> <values(i)>`.
     subroutine write_numbered(name, values)
         character(len=*), intent(in) :: name
         real(qp), intent(in) :: values(:)
         integer :: i
         do i = 1, size(values)
-            call out%put(name//itoa(i)//" "//str(values(i)))
+            call put_numbered(name, i, values(i))
         end do
     end subroutine write_numbered
+
+    !> The line `<name><i> <x>`, x with every digit of real(16) (as str),
+    !> assembled in place: a million of them are a long row's answer.
+    subroutine put_numbered(name, i, x)
+        character(len=*), intent(in) :: name
+        integer, intent(in) :: i
+        real(qp), intent(in) :: x
+        character(len=number_text_length) :: number, place
+        character(len=2*number_text_length + 2) :: line
+        integer :: n_number, n_place, at
+        call int_text(int(i, int64), place, n_place)
+        call real_text(x, precision(x) + 1, number, n_number)
+        at = len(name)
+        line(:at) = name
+        line(at + 1:at + n_place) = place(:n_place)
+        at = at + n_place + 1
+        line(at:at) = " "
+        line(at + 1:at + n_number) = number(:n_number)
+        at = at + n_number + 1
+        line(at:at) = new_line("a")
+        call out%put_text(line(:at))
+    end subroutine put_numbered
 
 
 

@@ -54,7 +54,8 @@ contains
             new_unittest("stdin_scene", test_stdin), &
             new_unittest("output_write_checked", test_output_checked), &
             new_unittest("time_overflow_names_v0", test_time_overflow), &
-            new_unittest("no_trailing_blank", test_no_trailing_blank) &
+            new_unittest("no_trailing_blank", test_no_trailing_blank), &
+            new_unittest("dp_tol_its_own_epsilon", test_dp_tol) &
             ]
     end function collect_front
 
@@ -693,7 +694,9 @@ contains
     !> exponents up to +-1100 (beyond 1e+-300), edge values (0, -0, huge, the
     !> smallest subnormal, the two sides of 1e99 and 1e-99 where the exponent
     !> gets four places) and exact ties of the rounding (k + 1/2, 0.125: to
-    !> even), at 1 to 40 significant digits; and, at 1, 17 and 34 digits,
+    !> even), at 1 to 40 significant digits, and as many random numbers of
+    !> binary exponents -70 ... 100, where the digits take the short road of
+    !> int128 products (fast_digits); and, at 1, 17 and 34 digits,
     !> random numbers over the whole range of real128, subnormals too (whose
     !> exact digits, up to some 11,600 of them, take up to a millisecond).
     subroutine test_real_text(error)
@@ -718,6 +721,8 @@ contains
             call random_number(u)
             call random_number(v)
             xs = [xs, sign(scale(0.5_qp + u/2, nint(-1100 + v*2200)), u - 0.5_qp)]
+            ! and the ordinary numbers of a run's output (1e-21 ... 1e30)
+            xs = [xs, sign(scale(0.5_qp + v/2, nint(-70 + u*170)), v - 0.5_qp)]
             if (i > size(wide)) cycle
             wide(i) = sign(scale(0.5_qp + v/2, nint(-16500 + u*32884)), v - 0.5_qp)
         end do
@@ -813,6 +818,28 @@ contains
         call check(error, status == 0 .and. index(out, "precision dp") > 0, &
             "tol just below 1, precision=dp: status "//itoa(status)//": "//err)
     end subroutine test_range_digits
+
+    !> precision=dp takes real(8)'s epsilon as tol unless tol is given: the
+    !> same answer as tol = 2^-52 given, and another than real(16)'s tol given
+    !> on a row near e_c whose collisions follow rates below 2e-16 (p = 7,
+    !> e = 0.3936: 262 collisions at real(8)'s epsilon, 582 at 1.93e-34).
+    subroutine test_dp_tol(error)
+        type(error_t), allocatable, intent(out) :: error
+        character(len=:), allocatable :: plain, own, fine, err
+        integer :: status
+        call run_program("p=7 e=0.3936 precision=dp", status, plain, err)
+        call check(error, status == 0, "p=7 e=0.3936 precision=dp: "//err)
+        if (allocated(error)) return
+        call run_program("p=7 e=0.3936 precision=dp " &
+            //"tol=2.220446049250313080847263336181640625e-16", status, own, err)
+        call check(error, status == 0 .and. own == plain, "tol = 2^-52 given differs from " &
+            //"the default: "//plain//" | "//own)
+        if (allocated(error)) return
+        call run_program("p=7 e=0.3936 precision=dp tol=1.93e-34", status, fine, err)
+        call check(error, status == 0 .and. index(plain, "collisions 262"//new_line("a")) == 1 &
+            .and. index(fine, "collisions 582"//new_line("a")) == 1, "collisions at the two " &
+            //"tolerances: "//plain(:index(plain, new_line("a")))//fine(:index(fine, new_line("a"))))
+    end subroutine test_dp_tol
 
     !> A scene file of 400,000 line ends and a list of 40,000 masses is read
     !> in well under a second (reading it took 14 s when each line was

@@ -57,7 +57,8 @@ contains
         call cli%add_reals("masses", "m1,m2,...", "the masses, p values (default: all 1)", &
             lo=0.0_qp, lo_open=.true., in_file=.true.)
         call cli%add_real("tol", short_text(defaults%tol), "rates below tol*v0 and gaps " &
-            //"below tol*max(a) are insignificant", lo=0.0_qp, hi=1.0_qp, hi_open=.true., &
+            //"below tol*max(a) are insignificant (default: the epsilon of the " &
+            //"precision; with precision=dp, 2.22e-16)", lo=0.0_qp, hi=1.0_qp, hi_open=.true., &
             shown=short_text(defaults%tol, 3), in_file=.true.)
         call cli%add_real("vtol", short_text(defaults%vtol), "a cascade at one instant that " &
             //"has run long is taken to its limit when every velocity it will end with is " &

@@ -5,7 +5,7 @@
 !> running bound on the rounding error): if it holds, real64 has taken the
 !> decisions exact arithmetic takes, and its results lie within the bounds of
 !> the exact ones. Otherwise the scene runs in real128 with the engine's full
-!> rules, and the certificate is applied there too.
+!> rules, once (the certificate is applied there too only if asked for).
 module sphere_row_auto
     use sphere_row_kinds, only: dp, qp
     use sphere_row_status, only: event_collision, status_invalid
@@ -37,10 +37,13 @@ contains
 
     !> Run `scene` in the precision it needs; `run` holds the answer in
     !> real128 whichever kind computed it, and `pairs`, if present, its
-    !> collision sequence (the left sphere of each pair, in order). A scene
-    !> answered in real128 is certified too unless `certify_qp` is false
-    !> (then auto%certified is false: a sweep that needs only the answer
-    !> saves that second run).
+    !> collision sequence (the left sphere of each pair, in order). The
+    !> real64 run stops at the first decision its certificate cannot take,
+    !> and the scene then runs once in real128, whose answer carries the
+    !> engine's own label (auto%certified false), as with precision qp. Only
+    !> with `certify_qp` is that run certified as well, by a second run of the
+    !> certificate, which scans every gap at every collision (O(p), where the
+    !> engine's calendar of a long row takes O(log p)).
     subroutine simulate_auto(scene, run, auto, pairs, certify_qp)
         type(scene_t), intent(in) :: scene
         type(run_t), intent(inout) :: run
@@ -82,9 +85,8 @@ contains
             call simulate_wp(scene, run)
         end if
         auto%answered = "qp"
-        if (present(certify_qp)) then
-            if (.not. certify_qp) return
-        end if
+        if (.not. present(certify_qp)) return
+        if (.not. certify_qp) return
         call simulate_certified_wp(scene, check, bounds)
         auto%certified = bounds%certified .and. check%n == run%n .and. check%status == run%status
         if (auto%certified) then

@@ -54,6 +54,8 @@ program c12_bench
     call side_by_side()
     call callgrind_counts()
     call method_costs()
+    call loop_costs()
+    call whole_process()
     seconds = 0
     do i = 1, size(tasks)
         call study_time("c12-"//trim(tasks(i)), seconds)
@@ -298,6 +300,70 @@ contains
                 //real_str(fastest(2), 3)
         end do
     end subroutine side_by_side
+
+    !> The engine against the study's tight loop per collision, copied from
+    !> c12-cost's cost_vs_loop.tsv (paired runs there, medians of rounds):
+    !> the ratio to the loop with its clock in one real, the issue's yardstick,
+    !> and to the same loop with the engine's two-real clock.
+    subroutine loop_costs()
+        character(len=4000) :: line
+        character(len=:), allocatable :: f(:), head(:), key
+        integer :: u, ios, j, c(8)
+        character(len=*), parameter :: names(8) = [character(len=22) :: "row", "p", "e", &
+            "precision", "engine_ns_per_collision", "loop_ns_per_collision", "ratio", &
+            "ratio_loop2"]
+        open (newunit=u, file=out//"/cost_vs_loop.tsv", status="old", action="read", &
+            iostat=ios)
+        if (ios /= 0) return
+        read (u, "(a)", iostat=ios) line
+        call split_tabs(trim(line), head)
+        c = 0
+        do j = 1, size(head)
+            where (names == head(j)) c = j
+        end do
+        if (minval(c) == 0) then
+            close (u)
+            return
+        end if
+        do
+            read (u, "(a)", iostat=ios) line
+            if (ios /= 0) exit
+            call split_tabs(trim(line), f)
+            if (size(f) < maxval(c)) cycle
+            key = "loop."//trim(f(c(1)))//".p"//trim(f(c(2)))//"."//trim(f(c(4)))
+            write (unit, "(a)") key//".ratio"//tab//trim(f(c(7)))//tab//"1"//tab// &
+                "ns per collision of the engine ("//trim(f(c(5)))//") over the tight loop's (" &
+                //trim(f(c(6)))//"), e = "//trim(f(c(3)))//", median of paired rounds, from " &
+                //"cost_vs_loop.tsv"
+            write (unit, "(a)") key//".ratio_loop2"//tab//trim(f(c(8)))//tab//"1"//tab// &
+                "the same over the loop with the engine's two-real clock"
+        end do
+        close (u)
+    end subroutine loop_costs
+
+    !> sphere-row p = 10^6, e = 1 as a whole process (its answer written to
+    !> /dev/null) against the tight real(16) loop's process on the same row,
+    !> in turn; and the same process cut after one collision, which still
+    !> reads the scene, sets up the row and writes an answer of 3 10^6
+    !> numbers: a bound on the price of the output.
+    subroutine whole_process()
+        real(qp) :: ta, tb, ratio, tc
+        call in_turn(bin//"/sphere-row p=1000000 e=1", bin//"/c12-tight-loop p=1000000 e=1", &
+            ta, tb, ratio)
+        write (unit, "(a)") "whole.p1e6_e1.seconds"//tab//real_str(ta, 3)//tab//"s"//tab// &
+            "sphere-row p=1000000 e=1 (qp), the whole process, its 3 10^6 numbers to /dev/null," &
+            //" median of "//itoa(pairs)
+        write (unit, "(a)") "whole.p1e6_e1.loop_seconds"//tab//real_str(tb, 3)//tab//"s"//tab// &
+            "c12-tight-loop p=1000000 e=1 (real(16), one-real clock, no output), in turn with it"
+        write (unit, "(a)") "whole.p1e6_e1.ratio"//tab//real_str(ratio, 3)//tab//"1"//tab// &
+            "median of the pairs' ratios; target at most 3"
+        call in_turn(bin//"/sphere-row p=1000000 e=1 max_collisions=1", bin// &
+            "/c12-tight-loop p=1000000 e=1", tc, tb, ratio)
+        write (unit, "(a)") "whole.p1e6_e1.output_seconds"//tab//real_str(tc, 3)//tab//"s"// &
+            tab//"sphere-row p=1000000 e=1 max_collisions=1: the same process after one " &
+            //"collision (reading, setting up, writing the 3 10^6 numbers), median of " &
+            //itoa(pairs)//"; the output's bound, target at most 0.5"
+    end subroutine whole_process
 
     !> The value of row `key` of an answer table, copied as a row of
     !> bench.tsv with the note `note` (nothing if the table has no such row).

@@ -5,10 +5,24 @@
 !> p - 1 collisions) and inelastic ones (e = 0.5, the first 4 (p - 1)
 !> collisions, before any cycle watching starts). The crossover is the
 !> shortest row from which the calendar is faster.
+!>
+!> Then the price of the engine's bookkeeping: each precision of sphere-row
+!> (the engine in real(16), in real(8) with real(8)'s epsilon as tol, and
+!> precision auto) against the tight event loop of the
+!> study (sphere_row_tight.inc: the same variables, rule and stop, a heap,
+!> nothing else) in real(16), or real(8) for dp, on elastic rows p = 10^3 ...
+!> 10^6, inelastic rows that end normally and a collapse-heavy row (p = 10^5,
+!> e = 0.2, its first 10^6 collisions); runs in turn, engine and loop, the
+!> median of the ratios of the rounds (cost_vs_loop.tsv); and against the
+!> same loop with the engine's two-real clock (loop2), which tells the price
+!> of that clock's accuracy from the price of the rest.
 program c12_cost
     use, intrinsic :: iso_fortran_env, only: int64
     use sphere_row, only: qp, scene_t, run_t, scene_init, simulate, str, itoa, &
-        status_normal, status_max_collisions
+        status_normal, status_max_collisions, auto_t, simulate_auto, real_str, scene_dp_t, &
+        run_dp_t
+    use sphere_row_tight_qp, only: tight_qp => tight_run
+    use sphere_row_tight_dp, only: tight_dp => tight_run
     use sphere_row_tables, only: open_table, close_table, tab
     use sphere_row_study_cli, only: cli_t, start_program, read_keys, fail, stop_unless_normal, &
         stop_unless_written
@@ -25,6 +39,23 @@ program c12_cost
     !> Longest row of the comparison of elastic rows in one run, and the
     !> shorter one it is compared with.
     integer, parameter :: p_long = 32000, p_short = 2000
+    !> The scenes of the comparison with the tight loop: p, e and the
+    !> collision budget (0: none), and their rounds.
+    type :: loop_scene_t
+        character(len=12) :: name
+        integer :: p
+        real(qp) :: e
+        integer :: budget, rounds
+    end type loop_scene_t
+    type(loop_scene_t), parameter :: loop_scenes(*) = [ &
+        loop_scene_t("elastic", 1000, 1.0_qp, 0, 5), &
+        loop_scene_t("elastic", 10000, 1.0_qp, 0, 5), &
+        loop_scene_t("elastic", 100000, 1.0_qp, 0, 5), &
+        loop_scene_t("elastic", 1000000, 1.0_qp, 0, 3), &
+        loop_scene_t("inelastic", 200, 0.98_qp, 0, 5), &
+        loop_scene_t("inelastic", 1000, 0.999_qp, 0, 3), &
+        loop_scene_t("collapse", 100000, 0.2_qp, 1000000, 3)]
+    character(len=*), parameter :: precisions(3) = ["qp  ", "dp  ", "auto"]
     type(cli_t) :: cli
     character(len=:), allocatable :: out
     integer :: p_max, scan_max, inelastic_max, unit, stat, crossover(2)
@@ -41,6 +72,7 @@ program c12_cost
     call cli%add_int("inelastic_max", "65536", "longest inelastic row timed", lo=4)
     call cli%add_real("min_seconds", "0.02", "each point repeats runs for at least this long", &
         lo=0.0_qp)
+    call cli%add_flag("loop", "yes", "the comparison with the tight loop (cost_vs_loop.tsv)")
     call read_keys(cli)
     out = cli%get_word("out")
     p_max = cli%get_int("p_max")
@@ -56,8 +88,122 @@ program c12_cost
     call close_table(unit, stat, msg)
     call stop_unless_written(stat, msg)
     call write_summary()
+    if (cli%get_flag("loop")) call against_loop()
 
 contains
+
+    !> Every scene of loop_scenes in every precision against the tight loop:
+    !> one row each in cost_vs_loop.tsv.
+    subroutine against_loop()
+        integer :: u, i, j
+        call open_table(out, "cost_vs_loop.tsv", "row"//tab//"p"//tab//"e"//tab// &
+            "precision"//tab//"collisions"//tab//"loop_collisions"//tab//"rounds"//tab// &
+            "engine_ns_per_collision"//tab//"loop_ns_per_collision"//tab//"ratio"//tab// &
+            "loop2_ns_per_collision"//tab//"ratio_loop2", u, stat, msg)
+        call stop_unless_normal(stat, msg)
+        do i = 1, size(loop_scenes)
+            do j = 1, size(precisions)
+                call loop_row(u, loop_scenes(i), trim(precisions(j)))
+            end do
+        end do
+        call close_table(u, stat, msg)
+        call stop_unless_written(stat, msg)
+    end subroutine against_loop
+
+    !> One scene in one precision against its loop (real(8) for dp, else
+    !> real(16)), engine and loop in turn, each repeated for min_seconds in a
+    !> round; the medians of the rounds' ns per collision and of their ratios.
+    subroutine loop_row(u, ls, precision)
+        integer, intent(in) :: u
+        type(loop_scene_t), intent(in) :: ls
+        character(len=*), intent(in) :: precision
+        type(scene_t) :: scene
+        type(run_t) :: run
+        type(scene_dp_t) :: scene_dp
+        type(run_dp_t) :: run_dp
+        type(auto_t) :: auto
+        real(dp) :: engine_ns(ls%rounds), loop_ns(ls%rounds), loop2_ns(ls%rounds)
+        integer :: status, n_engine
+        real(qp) :: tol
+        integer(int64) :: t0, t1, rate
+        integer :: r, runs, st, n_loop, budget
+        character(len=200) :: text
+        call scene_init(scene, st, text, p=ls%p, e=ls%e)
+        if (ls%budget > 0) scene%max_collisions = ls%budget
+        budget = huge(1)
+        if (ls%budget > 0) budget = ls%budget
+        tol = scene%tol
+        ! real(8) at its own epsilon as tol, as sphere-row precision=dp
+        call scene_init(scene_dp, st, text, p=ls%p, e=real(ls%e, dp))
+        scene_dp%max_collisions = scene%max_collisions
+        if (precision == "dp") tol = real(scene_dp%tol, qp)
+        do r = 1, ls%rounds
+            runs = 0
+            call system_clock(t0, rate)
+            do
+                select case (precision)
+                case ("qp")
+                    call simulate(scene, run)
+                case ("dp")
+                    call simulate(scene_dp, run_dp)
+                case default
+                    call simulate_auto(scene, run, auto)
+                end select
+                runs = runs + 1
+                call system_clock(t1)
+                if (real(t1 - t0, qp)/rate >= min_seconds) exit
+            end do
+            status = run%status
+            n_engine = run%n
+            if (precision == "dp") then
+                status = run_dp%status
+                n_engine = run_dp%n
+            end if
+            if (status /= status_normal .and. status /= status_max_collisions) &
+                call fail(trim(ls%name)//" p = "//itoa(ls%p)//" "//precision// &
+                ": the run ended with status "//itoa(status))
+            engine_ns(r) = real(1.0e9_qp*real(t1 - t0, qp)/rate/(real(runs, qp)*max(n_engine, 1)), &
+                dp)
+            loop_ns(r) = loop_time(ls, precision == "dp", tol, budget, .false., n_loop)
+            loop2_ns(r) = loop_time(ls, precision == "dp", tol, budget, .true., n_loop)
+        end do
+        write (u, "(a)") trim(ls%name)//tab//itoa(ls%p)//tab//real_str(ls%e, 3)//tab// &
+            precision//tab//itoa(n_engine)//tab//itoa(n_loop)//tab//itoa(ls%rounds)//tab// &
+            real_str(real(median(engine_ns), qp), 3)//tab//real_str(real(median(loop_ns), qp), 3) &
+            //tab//real_str(real(median(engine_ns/loop_ns), qp), 3)//tab// &
+            real_str(real(median(loop2_ns), qp), 3)//tab// &
+            real_str(real(median(engine_ns/loop2_ns), qp), 3)
+        flush (u)
+    end subroutine loop_row
+
+    !> ns per collision of the tight loop on scene ls, in real(8) (in_dp) or
+    !> real(16), the clock in two reals or one, repeated for min_seconds;
+    !> n_loop its collisions.
+    real(dp) function loop_time(ls, in_dp, tol, budget, two_real, n_loop) result(ns)
+        type(loop_scene_t), intent(in) :: ls
+        logical, intent(in) :: in_dp, two_real
+        real(qp), intent(in) :: tol
+        integer, intent(in) :: budget
+        integer, intent(out) :: n_loop
+        real(qp) :: t_end, v_sum
+        real(dp) :: t_end_dp, v_sum_dp
+        integer(int64) :: t0, t1, rate
+        integer :: runs
+        runs = 0
+        call system_clock(t0, rate)
+        do
+            if (in_dp) then
+                call tight_dp(ls%p, real(ls%e, dp), 1.0_dp, real(tol, dp), budget, two_real, &
+                    n_loop, t_end_dp, v_sum_dp)
+            else
+                call tight_qp(ls%p, ls%e, 1.0_qp, tol, budget, two_real, n_loop, t_end, v_sum)
+            end if
+            runs = runs + 1
+            call system_clock(t1)
+            if (real(t1 - t0, qp)/rate >= min_seconds) exit
+        end do
+        ns = real(1.0e9_qp*real(t1 - t0, qp)/rate/(real(runs, qp)*max(n_loop, 1)), dp)
+    end function loop_time
 
     !> Time every p of one row kind, both ways; `cross` is the shortest p
     !> from which the calendar is faster than the scan at every longer p
