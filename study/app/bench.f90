@@ -23,6 +23,9 @@ program c12_bench
     character(len=4000) :: arg0
     character(len=300) :: msg
     real(qp) :: seconds, e_values(3) = [0.2_qp, 0.5_qp, 0.18_qp]
+    !> ns per collision of the engine on the elastic row of 10^6 spheres in
+    !> real(16), from cost_vs_loop.tsv (0: not there).
+    real(qp) :: engine_ns_p1e6 = 0
     real :: min_seconds
     integer :: stat, unit, i, k
 
@@ -309,7 +312,7 @@ contains
         character(len=4000) :: line
         character(len=:), allocatable :: f(:), head(:), key
         integer :: u, ios, j, c(8)
-        character(len=*), parameter :: names(8) = [character(len=22) :: "row", "p", "e", &
+        character(len=*), parameter :: names(8) = [character(len=23) :: "row", "p", "e", &
             "precision", "engine_ns_per_collision", "loop_ns_per_collision", "ratio", &
             "ratio_loop2"]
         open (newunit=u, file=out//"/cost_vs_loop.tsv", status="old", action="read", &
@@ -337,17 +340,18 @@ contains
                 //"cost_vs_loop.tsv"
             write (unit, "(a)") key//".ratio_loop2"//tab//trim(f(c(8)))//tab//"1"//tab// &
                 "the same over the loop with the engine's two-real clock"
+            if (key == "loop.elastic.p1000000.qp") read (f(c(5)), *, iostat=ios) engine_ns_p1e6
         end do
         close (u)
     end subroutine loop_costs
 
     !> sphere-row p = 10^6, e = 1 as a whole process (its answer written to
     !> /dev/null) against the tight real(16) loop's process on the same row,
-    !> in turn; and the same process cut after one collision, which still
-    !> reads the scene, sets up the row and writes an answer of 3 10^6
-    !> numbers: a bound on the price of the output.
+    !> in turn; and what is not the run in that process (reading the scene,
+    !> setting up, the answer's 3 10^6 numbers written): its time less the
+    !> engine's 999,999 collisions at their price in cost_vs_loop.tsv.
     subroutine whole_process()
-        real(qp) :: ta, tb, ratio, tc
+        real(qp) :: ta, tb, ratio
         call in_turn(bin//"/sphere-row p=1000000 e=1", bin//"/c12-tight-loop p=1000000 e=1", &
             ta, tb, ratio)
         write (unit, "(a)") "whole.p1e6_e1.seconds"//tab//real_str(ta, 3)//tab//"s"//tab// &
@@ -357,12 +361,11 @@ contains
             "c12-tight-loop p=1000000 e=1 (real(16), one-real clock, no output), in turn with it"
         write (unit, "(a)") "whole.p1e6_e1.ratio"//tab//real_str(ratio, 3)//tab//"1"//tab// &
             "median of the pairs' ratios; target at most 3"
-        call in_turn(bin//"/sphere-row p=1000000 e=1 max_collisions=1", bin// &
-            "/c12-tight-loop p=1000000 e=1", tc, tb, ratio)
-        write (unit, "(a)") "whole.p1e6_e1.output_seconds"//tab//real_str(tc, 3)//tab//"s"// &
-            tab//"sphere-row p=1000000 e=1 max_collisions=1: the same process after one " &
-            //"collision (reading, setting up, writing the 3 10^6 numbers), median of " &
-            //itoa(pairs)//"; the output's bound, target at most 0.5"
+        if (engine_ns_p1e6 > 0) write (unit, "(a)") "whole.p1e6_e1.not_the_run_seconds"//tab &
+            //real_str(ta - 999999*engine_ns_p1e6*1.0e-9_qp, 3)//tab//"s"//tab//"the process " &
+            //"above less its run (999,999 collisions at the engine's "//real_str(engine_ns_p1e6, &
+            3)//" ns in cost_vs_loop.tsv): reading, setting up, writing 3 10^6 numbers with " &
+            //"every digit; target for the output at most 0.5"
     end subroutine whole_process
 
     !> The value of row `key` of an answer table, copied as a row of
