@@ -1,7 +1,7 @@
 !> sphere-row: run one scene of a row of spheres and print the complete answer.
 program sphere_row_main
     use, intrinsic :: iso_fortran_env, only: error_unit, int64
-    use sphere_row, only: qp, dp, scene_t, run_t, event_log_t, simulate, str, status_word, &
+    use sphere_row, only: qp, dp, scene_t, run_t, event_log_t, simulate, status_word, &
         status_invalid, status_normal, event_collision, event_collapse, itoa, auto_t, &
         simulate_auto, simulate_in_dp, answer_word, answer_certified, answer_unresolved, &
         answer_exact, real_str
@@ -22,8 +22,10 @@ program sphere_row_main
     type(text_out_t), target :: out
     logical :: events
     character(len=:), allocatable :: precision_word
-    !> Significant digits of a real(16) (str's).
-    integer, parameter :: precision_digits = precision(1.0_qp) + 1
+    !> Significant digits of the kind that answered: real(16)'s (str's), or
+    !> real(8)'s where it answered (precision=dp, or auto in real(8)); no
+    !> number is written with more digits than its kind holds.
+    integer :: precision_digits = precision(1.0_qp) + 1
 
     call define_keys()
     call read_command_line(cli)
@@ -189,7 +191,10 @@ contains
         integer :: j
         character(len=:), allocatable :: groups
         call out%put("collisions "//itoa(run%n))
-        call out%put("t_end "//str(run%t_end))
+        if (precision_word == "dp") precision_digits = precision(1.0_dp) + 1
+        if (precision_word == "auto" .and. auto%answered == "dp") &
+            precision_digits = precision(1.0_dp) + 1
+        call out%put("t_end "//real_str(run%t_end, precision_digits))
         call out%put("status "//status_word(run%status))
         bound = run%v_bound
         if (precision_word == "auto") then
@@ -214,7 +219,7 @@ contains
             call out%put("limits_bounded "//itoa(run%limits%bounded))
             call out%put("collapse_spheres "//itoa(run%limits%first)//"-" &
                 //itoa(run%limits%last))
-            call out%put("collapse_t "//str(run%limits%t))
+            call out%put("collapse_t "//real_str(run%limits%t, precision_digits))
         end if
         if (run%answer == answer_exact .and. run%status == status_normal) then
             separation = maxval(abs(run%dy))/scene%v0
@@ -306,7 +311,7 @@ contains
         end do
     end subroutine write_numbered
 
-    !> The line `<name><i> <x>`, x with every digit of real(16) (as str),
+    !> The line `<name><i> <x>`, x with every digit of the kind that answered,
     !> assembled in place: a million of them are a long row's answer.
     subroutine put_numbered(name, i, x)
         character(len=*), intent(in) :: name
@@ -316,7 +321,7 @@ contains
         character(len=2*number_text_length + 2) :: line
         integer :: n_number, n_place, at
         call int_text(int(i, int64), place, n_place)
-        call real_text(x, precision(x) + 1, number, n_number)
+        call real_text(x, precision_digits, number, n_number)
         at = len(name)
         line(:at) = name
         line(at + 1:at + n_place) = place(:n_place)

@@ -55,7 +55,7 @@ contains
             new_unittest("output_write_checked", test_output_checked), &
             new_unittest("time_overflow_names_v0", test_time_overflow), &
             new_unittest("no_trailing_blank", test_no_trailing_blank), &
-            new_unittest("dp_tol_its_own_epsilon", test_dp_tol) &
+            new_unittest("dp_tol_and_digits", test_dp_tol) &
             ]
     end function collect_front
 
@@ -822,7 +822,8 @@ contains
     !> precision=dp takes real(8)'s epsilon as tol unless tol is given: the
     !> same answer as tol = 2^-52 given, and another than real(16)'s tol given
     !> on a row near e_c whose collisions follow rates below 2e-16 (p = 7,
-    !> e = 0.3936: 262 collisions at real(8)'s epsilon, 582 at 1.93e-34).
+    !> e = 0.3936: 262 collisions at real(8)'s epsilon, 582 at 1.93e-34); and
+    !> its numbers have real(8)'s 16 digits, not real(16)'s 34.
     subroutine test_dp_tol(error)
         type(error_t), allocatable, intent(out) :: error
         character(len=:), allocatable :: plain, own, fine, err
@@ -834,6 +835,10 @@ contains
             //"tol=2.220446049250313080847263336181640625e-16", status, own, err)
         call check(error, status == 0 .and. own == plain, "tol = 2^-52 given differs from " &
             //"the default: "//plain//" | "//own)
+        if (allocated(error)) return
+        call check(error, index(plain, new_line("a")//"t_end 4.070472125098516E+01" &
+            //new_line("a")) > 0 .and. index(plain, new_line("a")//"v1 1.428571428571431E-01" &
+            //new_line("a")) > 0, "real(8)'s numbers not in 16 digits: "//plain(:200))
         if (allocated(error)) return
         call run_program("p=7 e=0.3936 precision=dp tol=1.93e-34", status, fine, err)
         call check(error, status == 0 .and. index(plain, "collisions 262"//new_line("a")) == 1 &
