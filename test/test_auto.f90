@@ -28,7 +28,8 @@ contains
         tests = [ &
             new_unittest("auto_e_0172_as_real128", test_near_critical), &
             new_unittest("auto_equals_real128", test_many_values), &
-            new_unittest("auto_at_extreme_scales", test_extreme_scales) &
+            new_unittest("auto_at_extreme_scales", test_extreme_scales), &
+            new_unittest("auto_long_row_in_real128_once", test_long_row) &
             ]
     end function collect_auto
 
@@ -49,6 +50,33 @@ contains
         call check(error, auto%answered == "dp" .and. auto%certified, &
             "e = 0.5: real64 not certified")
     end subroutine test_near_critical
+
+    !> A long row (p >= calendar_from) is not tried in real64, whose
+    !> certificate scans every gap at every collision: an elastic row of 60
+    !> spheres of graded masses runs in real128, once (not certified), and the
+    !> same row with calendar_from above 60 is certified in real64, with the
+    !> same collisions.
+    subroutine test_long_row(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(scene_t) :: scene
+        type(run_t) :: run
+        type(auto_t) :: auto
+        integer :: stat, i, n_long
+        character(len=200) :: msg
+        call scene_init(scene, stat, msg, p=60, e=1.0_qp, &
+            masses=[(1 + i/100.0_qp, i=0, 59)])
+        call simulate_auto(scene, run, auto)
+        n_long = run%n
+        call check(error, auto%answered == "qp" .and. .not. auto%certified .and. &
+            index(auto%why_not_dp, "a long row") == 1, "p = 60: "//auto%answered//", " &
+            //auto%why_not_dp)
+        if (allocated(error)) return
+        scene%calendar_from = 61
+        call simulate_auto(scene, run, auto)
+        call check(error, auto%answered == "dp" .and. auto%certified .and. run%n == n_long, &
+            "p = 60, calendar_from = 61: "//auto%answered//", "//itoa(run%n)//" collisions, " &
+            //itoa(n_long)//" before; "//auto%why_not_dp)
+    end subroutine test_long_row
 
     !> Scenes with e uniform, e dense near every change of n(e) and near
     !> e_crit (p = 4, equal masses), and random rows: at least 10^4 in the
