@@ -213,10 +213,10 @@ contains
     !> decimal_digits by a shorter road where it is open (done), not done where
     !> not (the caller then takes the long one): y a normal binary128 number, y = m 2^k
     !> (m of 113 bits), and q = y 10^s, s = n - 1 - (decimal exponent of y)
-    !> in 0 ... 54, so that m 5^s is a product of two 120-bit integers held
-    !> exactly in two int128 parts (each partial product of 60-bit pieces
-    !> stays below 2^127), and q, its integer part after the shift by 2^(s +
-    !> k), below 10^n <= 10^34. The rounding to nearest, ties to even, reads
+    !> in 0 ... 54, so that m 5^s, of a 113-bit and an at most 126-bit
+    !> integer, is held exactly in two int128 parts (its partial products of
+    !> pieces of at most 60 and 66 bits, and their sums, stay below 2^127), and
+    !> q, its integer part after the shift by 2^(s + k), below 10^n <= 10^34. The rounding to nearest, ties to even, reads
     !> the bits shifted out: the same digits as the long road, about 20 times
     !> sooner (every ordinary number of a run's output takes this road).
     pure subroutine fast_digits(y, n, mantissa, power, done)

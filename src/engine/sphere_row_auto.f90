@@ -38,12 +38,12 @@ contains
     !> Run `scene` in the precision it needs; `run` holds the answer in
     !> real128 whichever kind computed it, and `pairs`, if present, its
     !> collision sequence (the left sphere of each pair, in order). real64 is
-    !> tried on rows shorter than scene%calendar_from only: the certificate
-    !> scans every gap at every collision, the engine's own order there, where
-    !> a long row's calendar takes O(log p) (an elastic row of 20,000 spheres
-    !> of graded masses, certified in real64: 1.87 s, against 0.06 s in
-    !> real128 and 0.04 s in real64 with the calendar). The
-    !> real64 run stops at the first decision its certificate cannot take,
+    !> not tried on a row that real128 runs with its calendar (p >=
+    !> scene%calendar_from, tol >= real128's epsilon): the certificate scans
+    !> every gap at every collision, where that calendar takes O(log p) (an
+    !> elastic row of 20,000 spheres of graded masses, certified in real64:
+    !> 1.87 s, against 0.06 s in real128). The real64 run stops at the first
+    !> decision its certificate cannot take,
     !> and the scene then runs once in real128, whose answer carries the
     !> engine's own label (auto%certified false), as with precision qp. Only
     !> with `certify_qp` is that run certified as well, by a second run of the
@@ -62,27 +62,17 @@ contains
         type(run_t) :: check
         type(event_log_dp_t) :: log_low
         type(event_log_t) :: log
-        auto%why_not_dp = "the scene's values are beyond real64"
-        if (fits_dp(scene) .and. scene%p >= scene%calendar_from) auto%why_not_dp = &
-            "a long row (p >= calendar_from): the certificate scans every gap at every collision"
-        if (fits_dp(scene) .and. scene%p < scene%calendar_from) then
-            call to_dp(scene, low)
-            if (present(pairs)) then
-                call certified_dp(low, run_low, bounds_low, log_low)
-            else
-                call certified_dp(low, run_low, bounds_low)
-            end if
-            auto%why_not_dp = bounds_low%why
-            if (bounds_low%certified) bounds_low%certified = finite(run_low, bounds_low)
-            if (bounds_low%certified) then
-                call from_dp(run_low, run)
-                auto%answered = "dp"
-                auto%certified = .true.
-                auto%v_bounds = real(bounds_low%v, qp)
-                auto%v_bound = maxval(auto%v_bounds)
-                if (present(pairs)) pairs = pack(log_low%first(1:log_low%n), &
-                    log_low%kind(1:log_low%n) == event_collision)
-                return
+        logical :: long, done
+        ! (a row real128 runs with its calendar: p >= calendar_from, tol at least
+        ! real128's epsilon, as run_start decides)
+        long = scene%p >= scene%calendar_from .and. scene%tol >= epsilon(1.0_qp)
+        auto%why_not_dp = "a long row (p >= calendar_from): the certificate scans every gap " &
+            //"at every collision"
+        if (.not. long) then
+            auto%why_not_dp = "the scene's values are beyond real64"
+            if (fits_dp(scene)) then
+                call try_real64(done)
+                if (done) return
             end if
         end if
         if (present(pairs)) then
@@ -100,6 +90,33 @@ contains
             auto%v_bounds = bounds%v
             auto%v_bound = maxval(auto%v_bounds)
         end if
+    contains
+        !> The scene in real64 under the certificate; done if it holds (and
+        !> every result is finite), then `run` and `auto` hold its answer.
+        subroutine try_real64(done)
+            logical, intent(out) :: done
+            call to_dp(scene, low)
+            if (present(pairs)) then
+                call certified_dp(low, run_low, bounds_low, log_low)
+            else
+                call certified_dp(low, run_low, bounds_low)
+            end if
+            auto%why_not_dp = bounds_low%why
+            done = bounds_low%certified
+            if (.not. done) return
+            done = finite(run_low, bounds_low)
+            if (.not. done) then
+                auto%why_not_dp = "a result or its bound beyond real64's range"
+                return
+            end if
+            call from_dp(run_low, run)
+            auto%answered = "dp"
+            auto%certified = .true.
+            auto%v_bounds = real(bounds_low%v, qp)
+            auto%v_bound = maxval(auto%v_bounds)
+            if (present(pairs)) pairs = pack(log_low%first(1:log_low%n), &
+                log_low%kind(1:log_low%n) == event_collision)
+        end subroutine try_real64
     end subroutine simulate_auto
 
     !> Every result and bound of a real64 run is finite.

@@ -22,12 +22,11 @@ program c12_bench
     integer, parameter :: pairs = 5
     character(len=4000) :: arg0
     character(len=300) :: msg
-    real(qp) :: seconds, e_values(3) = [0.2_qp, 0.5_qp, 0.18_qp]
     !> ns per collision of the engine on the elastic row of 10^6 spheres in
     !> real(16), from cost_vs_loop.tsv (0: not there).
-    real(qp) :: engine_ns_p1e6 = 0
+    real(qp) :: engine_ns_p1e6
     real :: min_seconds
-    integer :: stat, unit, i, k
+    integer :: stat, unit
 
     call start_program(cli, "c12-bench", &
         "Times the engine in each precision kind (ns per collision) and collects"//nl// &
@@ -45,31 +44,71 @@ program c12_bench
     call open_table(out, "bench.tsv", "quantity"//tab//"value"//tab//"unit"//tab//"note", &
         unit, stat, msg)
     call stop_unless_normal(stat, msg)
-    write (unit, "(a)") "machine.cpu"//tab//cpu_model()//tab//"-"//tab//"/proc/cpuinfo"
-    write (unit, "(a)") "machine.compiler"//tab//compiler_version()//tab//"-"//tab//"-"
-    write (unit, "(a)") "machine.flags"//tab//compiler_options()//tab//"-"//tab//"-"
-    do k = 1, size(e_values)
-        do i = size(built_kinds), 1, -1
-            call time_kind(built_kinds(i), e_values(k))
-        end do
-    end do
+    call machine_and_kinds()
     call time_monte_carlo()
     call side_by_side()
     call callgrind_counts()
     call method_costs()
-    call loop_costs()
-    call whole_process()
-    seconds = 0
-    do i = 1, size(tasks)
-        call study_time("c12-"//trim(tasks(i)), seconds)
-    end do
-    write (unit, "(a, f0.3, a)") "study.total_seconds"//tab, seconds, tab//"s"//tab// &
-        "wall time of the study programs (six tasks and the methods) of one make study, "// &
-        "one after the other"
+    call loop_costs(engine_ns_p1e6)
+    call whole_process(engine_ns_p1e6)
+    call study_total()
     call close_table(unit, stat, msg)
     call stop_unless_written(stat, msg)
 
 contains
+
+    !> The machine, and the definition's scene in every kind built at three e.
+    subroutine machine_and_kinds()
+        real(qp), parameter :: e_values(3) = [0.2_qp, 0.5_qp, 0.18_qp]
+        integer :: i, k
+        write (unit, "(a)") "machine.cpu"//tab//cpu_model()//tab//"-"//tab//"/proc/cpuinfo"
+        write (unit, "(a)") "machine.compiler"//tab//compiler_version()//tab//"-"//tab//"-"
+        write (unit, "(a)") "machine.flags"//tab//compiler_options()//tab//"-"//tab//"-"
+        do k = 1, size(e_values)
+            do i = size(built_kinds), 1, -1
+                call time_kind(built_kinds(i), e_values(k))
+            end do
+        end do
+    end subroutine machine_and_kinds
+
+    !> The study programs' wall times of one make study, summed.
+    subroutine study_total()
+        real(qp) :: seconds
+        integer :: i
+        seconds = 0
+        do i = 1, size(tasks)
+            call study_time("c12-"//trim(tasks(i)), seconds)
+        end do
+        write (unit, "(a, f0.3, a)") "study.total_seconds"//tab, seconds, tab//"s"//tab// &
+            "wall time of the study programs (six tasks and the methods) of one make study, "// &
+            "one after the other"
+    end subroutine study_total
+
+    !> Open a table of study results and find its columns `names` (c(j) the
+    !> column of names(j)); u = -1 if the table or a column is missing.
+    subroutine open_columns(path, names, u, c)
+        character(len=*), intent(in) :: path, names(:)
+        integer, intent(out) :: u, c(size(names))
+        character(len=4000) :: line
+        character(len=:), allocatable :: head(:)
+        integer :: ios, j
+        c = 0
+        open (newunit=u, file=path, status="old", action="read", iostat=ios)
+        if (ios /= 0) then
+            u = -1
+            return
+        end if
+        read (u, "(a)", iostat=ios) line
+        if (ios == 0) then
+            call split_tabs(trim(line), head)
+            do j = 1, size(head)
+                where (names == head(j)) c = j
+            end do
+        end if
+        if (minval(c) > 0) return
+        close (u)
+        u = -1
+    end subroutine open_columns
 
     !> Nanoseconds per collision of the definition's scene at e in one kind,
     !> over at least min_seconds of repeated runs (one core).
@@ -135,37 +174,21 @@ contains
     !> its table so that bench.tsv holds every speed figure of the study.
     subroutine method_costs()
         character(len=4000) :: line
-        character(len=:), allocatable :: f(:), head(:)
-        integer :: u, ios, c_e, c_label, c_run, c_col, j
-        open (newunit=u, file=out//"/methods_costs.tsv", status="old", action="read", &
-            iostat=ios)
-        if (ios /= 0) return
-        read (u, "(a)", iostat=ios) line
-        call split_tabs(trim(line), head)
-        c_e = 0
-        c_label = 0
-        c_run = 0
-        c_col = 0
-        do j = 1, size(head)
-            if (head(j) == "e[1]") c_e = j
-            if (head(j) == "label") c_label = j
-            if (head(j) == "ns_per_run[ns]") c_run = j
-            if (head(j) == "ns_per_collision[ns]") c_col = j
-        end do
-        if (min(c_e, c_label, c_run, c_col) == 0) then
-            close (u)
-            return
-        end if
+        character(len=:), allocatable :: f(:)
+        integer :: u, ios, c(4)
+        call open_columns(out//"/methods_costs.tsv", [character(len=20) :: "e[1]", "label", &
+            "ns_per_run[ns]", "ns_per_collision[ns]"], u, c)
+        if (u < 0) return
         do
             read (u, "(a)", iostat=ios) line
             if (ios /= 0) exit
             call split_tabs(trim(line), f)
-            if (size(f) < max(c_e, c_label, c_run, c_col)) cycle
-            write (unit, "(a)") "methods."//trim(f(c_label))//".ns_per_run"//tab// &
-                trim(f(c_run))//tab//"ns"//tab//"e = "//trim(f(c_e))// &
+            if (size(f) < maxval(c)) cycle
+            write (unit, "(a)") "methods."//trim(f(c(2)))//".ns_per_run"//tab// &
+                trim(f(c(3)))//tab//"ns"//tab//"e = "//trim(f(c(1)))// &
                 ", from methods_costs.tsv"
-            write (unit, "(a)") "methods."//trim(f(c_label))//".ns_per_collision"//tab// &
-                trim(f(c_col))//tab//"ns"//tab//"e = "//trim(f(c_e))// &
+            write (unit, "(a)") "methods."//trim(f(c(2)))//".ns_per_collision"//tab// &
+                trim(f(c(4)))//tab//"ns"//tab//"e = "//trim(f(c(1)))// &
                 ", from methods_costs.tsv"
         end do
         close (u)
@@ -308,26 +331,16 @@ contains
     !> c12-cost's cost_vs_loop.tsv (paired runs there, medians of rounds):
     !> the ratio to the loop with its clock in one real, the issue's yardstick,
     !> and to the same loop with the engine's two-real clock.
-    subroutine loop_costs()
+    subroutine loop_costs(engine_ns_p1e6)
+        real(qp), intent(out) :: engine_ns_p1e6
         character(len=4000) :: line
-        character(len=:), allocatable :: f(:), head(:), key
-        integer :: u, ios, j, c(8)
-        character(len=*), parameter :: names(8) = [character(len=23) :: "row", "p", "e", &
+        character(len=:), allocatable :: f(:), key
+        integer :: u, ios, c(8)
+        engine_ns_p1e6 = 0
+        call open_columns(out//"/cost_vs_loop.tsv", [character(len=23) :: "row", "p", "e", &
             "precision", "engine_ns_per_collision", "loop_ns_per_collision", "ratio", &
-            "ratio_loop2"]
-        open (newunit=u, file=out//"/cost_vs_loop.tsv", status="old", action="read", &
-            iostat=ios)
-        if (ios /= 0) return
-        read (u, "(a)", iostat=ios) line
-        call split_tabs(trim(line), head)
-        c = 0
-        do j = 1, size(head)
-            where (names == head(j)) c = j
-        end do
-        if (minval(c) == 0) then
-            close (u)
-            return
-        end if
+            "ratio_loop2"], u, c)
+        if (u < 0) return
         do
             read (u, "(a)", iostat=ios) line
             if (ios /= 0) exit
@@ -350,7 +363,8 @@ contains
     !> in turn; and what is not the run in that process (reading the scene,
     !> setting up, the answer's 3 10^6 numbers written): its time less the
     !> engine's 999,999 collisions at their price in cost_vs_loop.tsv.
-    subroutine whole_process()
+    subroutine whole_process(engine_ns_p1e6)
+        real(qp), intent(in) :: engine_ns_p1e6
         real(qp) :: ta, tb, ratio
         call in_turn(bin//"/sphere-row p=1000000 e=1", bin//"/c12-tight-loop p=1000000 e=1", &
             ta, tb, ratio)
