@@ -84,20 +84,20 @@ contains
             "one after the other"
     end subroutine study_total
 
-    !> Open a table of study results and find its columns `names` (c(j) the
-    !> column of names(j)); u = -1 if the table or a column is missing.
-    subroutine open_columns(path, names, u, c)
+    !> Open a table of study results on unit u and find its columns `names`
+    !> (c(j) the column of names(j)); not ok (and closed) if the table or a
+    !> column is missing.
+    subroutine open_columns(path, names, u, c, ok)
         character(len=*), intent(in) :: path, names(:)
         integer, intent(out) :: u, c(size(names))
+        logical, intent(out) :: ok
         character(len=4000) :: line
         character(len=:), allocatable :: head(:)
         integer :: ios, j
         c = 0
         open (newunit=u, file=path, status="old", action="read", iostat=ios)
-        if (ios /= 0) then
-            u = -1
-            return
-        end if
+        ok = ios == 0
+        if (.not. ok) return
         read (u, "(a)", iostat=ios) line
         if (ios == 0) then
             call split_tabs(trim(line), head)
@@ -105,9 +105,8 @@ contains
                 where (names == head(j)) c = j
             end do
         end if
-        if (minval(c) > 0) return
-        close (u)
-        u = -1
+        ok = minval(c) > 0
+        if (.not. ok) close (u)
     end subroutine open_columns
 
     !> Nanoseconds per collision of the definition's scene at e in one kind,
@@ -176,9 +175,10 @@ contains
         character(len=4000) :: line
         character(len=:), allocatable :: f(:)
         integer :: u, ios, c(4)
+        logical :: ok
         call open_columns(out//"/methods_costs.tsv", [character(len=20) :: "e[1]", "label", &
-            "ns_per_run[ns]", "ns_per_collision[ns]"], u, c)
-        if (u < 0) return
+            "ns_per_run[ns]", "ns_per_collision[ns]"], u, c, ok)
+        if (.not. ok) return
         do
             read (u, "(a)", iostat=ios) line
             if (ios /= 0) exit
@@ -336,11 +336,12 @@ contains
         character(len=4000) :: line
         character(len=:), allocatable :: f(:), key
         integer :: u, ios, c(8)
+        logical :: ok
         engine_ns_p1e6 = 0
         call open_columns(out//"/cost_vs_loop.tsv", [character(len=23) :: "row", "p", "e", &
             "precision", "engine_ns_per_collision", "loop_ns_per_collision", "ratio", &
-            "ratio_loop2"], u, c)
-        if (u < 0) return
+            "ratio_loop2"], u, c, ok)
+        if (.not. ok) return
         do
             read (u, "(a)", iostat=ios) line
             if (ios /= 0) exit
