@@ -192,8 +192,9 @@ contains
         character(len=:), allocatable :: groups
         call out%put("collisions "//itoa(run%n))
         if (precision_word == "dp") precision_digits = precision(1.0_dp) + 1
-        if (precision_word == "auto" .and. auto%answered == "dp") &
-            precision_digits = precision(1.0_dp) + 1
+        if (precision_word == "auto") then
+            if (auto%answered == "dp") precision_digits = precision(1.0_dp) + 1
+        end if
         call out%put("t_end "//real_str(run%t_end, precision_digits))
         call out%put("status "//status_word(run%status))
         bound = run%v_bound

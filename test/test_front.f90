@@ -843,7 +843,8 @@ contains
         call run_program("p=7 e=0.3936 precision=dp tol=1.93e-34", status, fine, err)
         call check(error, status == 0 .and. index(plain, "collisions 262"//new_line("a")) == 1 &
             .and. index(fine, "collisions 582"//new_line("a")) == 1, "collisions at the two " &
-            //"tolerances: "//plain(:index(plain, new_line("a")))//fine(:index(fine, new_line("a"))))
+            //"tolerances: "//plain(:index(plain, new_line("a"))) &
+            //fine(:index(fine, new_line("a"))))
     end subroutine test_dp_tol
 
     !> A scene file of 400,000 line ends and a list of 40,000 masses is read

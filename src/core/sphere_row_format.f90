@@ -216,9 +216,10 @@ contains
     !> in 0 ... 54, so that m 5^s, of a 113-bit and an at most 126-bit
     !> integer, is held exactly in two int128 parts (its partial products of
     !> pieces of at most 60 and 66 bits, and their sums, stay below 2^127), and
-    !> q, its integer part after the shift by 2^(s + k), below 10^n <= 10^34. The rounding to nearest, ties to even, reads
-    !> the bits shifted out: the same digits as the long road, about 20 times
-    !> sooner (every ordinary number of a run's output takes this road).
+    !> q, its integer part after the shift by 2^(s + k), below 10^n <= 10^34.
+    !> The rounding to nearest, ties to even, reads the bits shifted out: the
+    !> same digits as the long road, about 20 times sooner (every ordinary
+    !> number of a run's output takes this road).
     pure subroutine fast_digits(y, n, mantissa, power, done)
         real(qp), intent(in) :: y
         integer, intent(in) :: n

@@ -159,9 +159,10 @@ contains
                 status = run_dp%status
                 n_engine = run_dp%n
             end if
-            if (status /= status_normal .and. status /= status_max_collisions) &
+            if (status /= status_normal .and. status /= status_max_collisions) then
                 call fail(trim(ls%name)//" p = "//itoa(ls%p)//" "//precision// &
-                ": the run ended with status "//itoa(status))
+                    ": the run ended with status "//itoa(status))
+            end if
             engine_ns(r) = real(1.0e9_qp*real(t1 - t0, qp)/rate/(real(runs, qp)*max(n_engine, 1)), &
                 dp)
             loop_ns(r) = loop_time(ls, precision == "dp", tol, budget, .false., n_loop)
