@@ -218,8 +218,9 @@ contains
     !> pieces of at most 60 and 66 bits, and their sums, stay below 2^127), and
     !> q, its integer part after the shift by 2^(s + k), below 10^n <= 10^34.
     !> The rounding to nearest, ties to even, reads the bits shifted out: the
-    !> same digits as the long road, about 20 times sooner (every ordinary
-    !> number of a run's output takes this road).
+    !> same digits as the long road, three to four times sooner (0.16 - 0.29
+    !> us against 0.5 - 1 us a number of 1e-10 ... 1e6 at 34 digits; every
+    !> ordinary number of a run's output takes this road).
     pure subroutine fast_digits(y, n, mantissa, power, done)
         real(qp), intent(in) :: y
         integer, intent(in) :: n
