@@ -14,6 +14,8 @@
 #   make bench           speed: the cost study (cost.tsv, the engine against the tight
 #                        loop in cost_vs_loop.tsv, their figures) and bench.tsv
 #   make check-results   regenerate the study elsewhere and compare with results/
+#   make ecrit-full      the full e_c(p) sweep, p = 3 ... 128, into results/ecrit_full/
+#                        (about an hour on 2 cores; MPI=1 NP=... spreads it over ranks)
 #   make docs            API documentation (FORD) in build/docs/index.html
 #   make lint            the Fortran linter fortitude, rules in fortitude.toml
 #   make test-mpi        c12-ecrit and c12-c2 on 1, 2 and 4 MPI ranks give the
@@ -91,7 +93,14 @@ METHODS := $(RESULTS)/methods_work_precision.tsv $(RESULTS)/methods_stability.ts
       $(RESULTS)/methods_platform.tsv
 COLLAPSE := $(RESULTS)/collapse_survey.tsv $(RESULTS)/collapse_by_p.tsv \
       $(RESULTS)/collapse_answers.tsv $(RESULTS)/collapse_unanswered.tsv
-ECRIT := $(RESULTS)/ecrit.tsv $(RESULTS)/ecrit_answers.tsv
+ECRIT := $(RESULTS)/ecrit.tsv $(RESULTS)/ecrit_answers.tsv $(RESULTS)/ecrit_map.tsv \
+      $(RESULTS)/ecrit_robust.tsv
+# the full e_c(p) sweep (make ecrit-full): its keys, its last row, and the rows
+# that check-results regenerates with its keys and compares with its tables
+ECRIT_FULL := results/ecrit_full
+ECRIT_FULL_KEYS := p_min=3 n_scan=2000 p_long=21 n_scan_long=200 robust_p_max=10
+ECRIT_FULL_P_MAX := 128
+ECRIT_FULL_CHECK_P := 6
 # machine-dependent timings (like bench.tsv): made by `make bench`, not by
 # `make study`, and not compared by check-results
 COST := $(RESULTS)/cost.tsv $(RESULTS)/cost_summary.tsv $(RESULTS)/cost_vs_loop.tsv
@@ -111,14 +120,14 @@ SPACETIME_TABLES := $(foreach s,$(SPACETIME),$(foreach t,lines collisions collap
                     $(SPACETIME_DIR)/$(s)_$(t).tsv))
 
 FIGURES := a1_paths b1_n b1_critical b2_velocities c1_secant c2_ecdf c2_histogram collapse_by_p \
-           c2_convergence ecrit
+           c2_convergence ecrit ecrit_map
 PNG := $(FIGURES:%=$(RESULTS)/%.png) $(RESULTS)/methods_work_precision.png \
        $(RESULTS)/methods_stability.png $(SPACETIME:%=$(RESULTS)/%.png)
 SVG := $(FIGURES:%=$(RESULTS)/%.svg) $(RESULTS)/methods_work_precision.svg \
        $(RESULTS)/methods_stability.svg $(SPACETIME:%=$(RESULTS)/%.svg)
 
 .PHONY: all help prereqs test test-long test-times mutants differential readme-commands test-mpi check-layers study tables \
-        figures bench callgrind check-results docs lint clean fuzz plot examples
+        figures bench callgrind check-results docs lint clean fuzz plot examples ecrit-full
 
 all: study
 
@@ -286,6 +295,7 @@ $(RESULTS)/collapse_by_p.png $(RESULTS)/collapse_by_p.svg: $(COLLAPSE)
 $(RESULTS)/c2_histogram.png $(RESULTS)/c2_histogram.svg: $(C2)
 $(RESULTS)/c2_convergence.png $(RESULTS)/c2_convergence.svg: $(C2)
 $(RESULTS)/ecrit.png $(RESULTS)/ecrit.svg: $(ECRIT)
+$(RESULTS)/ecrit_map.png $(RESULTS)/ecrit_map.svg: $(ECRIT)
 $(RESULTS)/cost.png $(RESULTS)/cost.svg: $(COST)
 $(RESULTS)/cost_loop.png $(RESULTS)/cost_loop.svg: $(COST)
 
@@ -335,6 +345,22 @@ check-results: prereqs ## regenerate the tables in build/ and compare with resul
 	rm -rf build/check
 	$(MAKE) --no-print-directory RESULTS=build/check tables build/check/answers.tsv
 	$(BIN)/tsv-compare committed=$(RESULTS) fresh=build/check
+	$(BIN)/c12-ecrit $(ECRIT_FULL_KEYS) p_max=$(ECRIT_FULL_CHECK_P) out=build/check/ecrit_full
+	bash tools/check-ecrit-rows $(ECRIT_FULL) build/check/ecrit_full $(ECRIT_FULL_CHECK_P)
+
+# the full e_c(p) sweep: its tables, its two figures, and sweep.tsv with its
+# wall time, ranks and threads (MPI=1 NP=... for ranks; OMP_NUM_THREADS threads)
+ecrit-full: prereqs $(ECRIT_STAMP) ## the full e_c(p) sweep p = 3 ... 128 into results/ecrit_full/
+	@mkdir -p $(ECRIT_FULL)
+	@start=$$(date +%s.%N); \
+	$(ECRIT_RUN) $(ECRIT_FULL_KEYS) p_max=$(ECRIT_FULL_P_MAX) out=$(ECRIT_FULL); \
+	end=$$(date +%s.%N); \
+	awk -v s=$$start -v e=$$end -v r=$(if $(filter 1,$(MPI)),$(NP),1) \
+		-v t=$${OMP_NUM_THREADS:-$$(nproc)} -v c=$$(nproc) -v k="$(ECRIT_FULL_KEYS) p_max=$(ECRIT_FULL_P_MAX)" \
+		'BEGIN { printf "keys\tseconds\tranks\tthreads_per_rank\tcores\n%s\t%.0f\t%d\t%s\t%d\n", k, e - s, r, t, c }' \
+		> $(ECRIT_FULL)/sweep.tsv
+	for f in ecrit ecrit_map; do for t in png svg; do \
+		gnuplot -e "dir='$(ECRIT_FULL)'; term='$$t'; out='$(ECRIT_FULL)/$$f.$$t'" study/$$f.gp; done; done
 
 # c12-ecrit on a short range of p (rows 3 ... 6 take the real(16) and
 # rate-map stages, so every field of a row travels between ranks): the serial
@@ -342,9 +368,9 @@ check-results: prereqs ## regenerate the tables in build/ and compare with resul
 # for 2 rows, where ranks have none) must write the same bytes; so must
 # c12-c2 on a short stream of 5 blocks whose third straddles n (4 ranks: one
 # with two blocks, one with the straddling block's main and rest counts)
-ECRIT_QUICK := p_min=3 p_max=10
+ECRIT_QUICK := p_min=3 p_max=10 n_scan=30
 C2_QUICK := n=25000 nmax=45000
-ECRIT_TABLES := ecrit.tsv ecrit_answers.tsv
+ECRIT_TABLES := ecrit.tsv ecrit_answers.tsv ecrit_map.tsv ecrit_robust.tsv
 C2_TABLES := c2_ecdf.tsv c2_histogram.tsv c2_convergence.tsv c2_answers.tsv
 test-mpi: prereqs $(BUILD_STAMP) $(MPI_STAMP) ## c12-ecrit and c12-c2 on 1, 2, 4 MPI ranks == serial, byte for byte
 	@rm -rf build/test-mpi

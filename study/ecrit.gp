@@ -1,32 +1,46 @@
-# C12 study e_crit(p): critical restitution of the struck row of p equal spheres.
+# C12 study e_crit(p): 1 - e_c of the struck row of p equal spheres against p,
+# on log axes, with three fits and their residuals. e_c of a row is the lowest
+# point of its scan that separated; the bar reaches up to the highest point
+# that collapsed where that lies above it (the mixed band).
 # Call: gnuplot -e "dir='results'; term='png'; out='results/ecrit.png'" study/ecrit.gp
-if (term eq 'png') { set terminal pngcairo size 1200,560 font ',11' } else { set terminal svg size 1200,560 dynamic font ',11' }
+if (term eq 'png') { set terminal pngcairo size 1200,620 font ',11' } else { set terminal svg size 1200,620 dynamic font ',11' }
 set output out
 set datafile separator tab
 set datafile missing '-'
 f = dir.'/ecrit.tsv'
 a = dir.'/ecrit_answers.tsv'
-beta = real(system("awk -F'\t' '$1==\"ecrit.power_beta\"{print $2}' ".a))
-c = real(system("awk -F'\t' '$1==\"ecrit.power_c\"{print $2}' ".a))
-k = real(system("awk -F'\t' '$1==\"ecrit.mcnamara_young_k\"{print $2}' ".a))
-set multiplot layout 1,2 title "C12 study e_{crit}(p): struck resting row of p equal spheres (a = d = v_0 = 1)"
-set xlabel "number of spheres p"
-set ylabel "critical restitution e_{crit}"
-set logscale x
-set grid
-set key bottom right box opaque
-set title "e_{crit} against p"
-set yrange [0:1]
-plot f using (column("p")):(column("e_crit[1]")) with points pt 7 ps 0.8 lc rgb '#1f77b4' title 'simulation edge / rate map', \
-     f using (column("p")):(column("e_crit_rate_map[1]")) with points pt 6 ps 1.6 lc rgb '#2ca02c' title 'rate map of the collapse cycle', \
-     f using (column("p")):(column("e_crit_power_fit[1]")) with lines lw 2 lc rgb '#d62728' title sprintf('1 - %.3g p^{-%.3f}', c, beta), \
-     f using (column("p")):(column("e_crit_mcnamara_young[1]")) with lines dt 2 lw 2 lc rgb '#7f7f7f' title sprintf('McNamara-Young: p = %.3f (-ln(1-e))/(1-e)', k)
-set title "1 - e_{crit} against p (log-log)"
-set ylabel "1 - e_{crit}"
-set autoscale y
+answer(key) = real(system("awk -F'\t' '$1==\"".key."\"{print $2}' ".a))
+beta = answer("ecrit.power_beta")
+c = answer("ecrit.power_c")
+cp = answer("ecrit.c_over_p")
+k = answer("ecrit.mcnamara_young_k")
+# the bar's top: the highest collapse if it lies above the lowest separation
+top(col_c, col_f) = (strcol(col_c) ne "-" && column(col_c) > column(col_f)) ? column(col_c) : column(col_f)
+set multiplot layout 2,1 title "C12 study e_{crit}(p): struck resting row of p equal spheres (a = d = v_0 = 1)"
+set lmargin 12
 set logscale xy
+set grid
+set xrange [2.5:*]
+set autoscale xfixmax
+set ylabel "1 - e_c"
 set key top right box opaque
-plot f using (column("p")):(1 - column("e_crit[1]")) with points pt 7 ps 0.8 lc rgb '#1f77b4' title '1 - e_{crit}', \
-     f using (column("p")):(1 - column("e_crit_power_fit[1]")) with lines lw 2 lc rgb '#d62728' title 'power-law fit', \
-     f using (column("p")):(1 - column("e_crit_mcnamara_young[1]")) with lines dt 2 lw 2 lc rgb '#7f7f7f' title 'McNamara-Young'
+set format x ""
+set size 1,0.62
+set origin 0,0.32
+plot f using (column("p")):(1 - column("e_finite_min[1]")):(1 - top("e_collapse_max[1]", "e_finite_min[1]")):(1 - column("e_finite_min[1]")) \
+        with yerrorbars pt 7 ps 0.6 lc rgb '#1f77b4' title '1 - e_c (lowest separated point; bar: mixed band)', \
+     f using (column("p")):(column("fit_power[1]")) with lines lw 2 lc rgb '#d62728' title sprintf('%.3g p^{-%.3f}', c, beta), \
+     f using (column("p")):(column("fit_c_over_p[1]")) with lines dt 3 lw 2 lc rgb '#2ca02c' title sprintf('%.3g / p', cp), \
+     f using (column("p")):(column("fit_mcnamara_young[1]")) with lines dt 2 lw 2 lc rgb '#7f7f7f' title sprintf('McNamara-Young: p = %.3g (-ln(1-e))/(1-e)', k)
+set size 1,0.3
+set origin 0,0.02
+unset logscale y
+set format x "%g"
+set xlabel "number of spheres p"
+set ylabel "data / fit"
+set key top left box opaque
+plot f using (column("p")):((1 - column("e_finite_min[1]"))/column("fit_power[1]")) with linespoints pt 7 ps 0.5 lc rgb '#d62728' title 'power law', \
+     f using (column("p")):((1 - column("e_finite_min[1]"))/column("fit_c_over_p[1]")) with linespoints pt 6 ps 0.5 lc rgb '#2ca02c' title 'C/p', \
+     f using (column("p")):((1 - column("e_finite_min[1]"))/column("fit_mcnamara_young[1]")) with linespoints pt 4 ps 0.5 lc rgb '#7f7f7f' title 'McNamara-Young', \
+     1 with lines lc rgb 'black' notitle
 unset multiplot

@@ -11,7 +11,7 @@ program c12_summary
     character(len=*), parameter :: tasks(8) = ["a1      ", "a2      ", "b1      ", &
         "b2      ", "c1      ", "c2      ", "collapse", "ecrit   "]
     !> Columns of an answer table whose numbers the prose quotes.
-    integer, parameter :: value = 2, check_value = 4, difference = 5
+    integer, parameter :: value = 2, check_value = 4, difference = 5, how_col = 6
     type(cli_t) :: cli
     character(len=:), allocatable :: out
     character(len=300) :: msg
@@ -138,19 +138,33 @@ contains
             "reached on them and the command that runs it again "// &
             "(collapse_unanswered.tsv).")
         call section("ecrit", "e_crit(p): critical restitution of the struck row of p spheres", &
-            [character(len=60) :: "ecrit"], &
-            "For every p equal spheres (a = d = v0 = 1) a scan of e decides each run by the "// &
-            "engine's collapse machinery (a certified cycle limit, a fallback limit, a finite "// &
-            "end, or undecided at max_collisions; ecrit.tsv) and bisects the edge of the "// &
-            "finite region. For the shortest rows the collision pattern of a run just below "// &
-            "the edge gives the rate map M(e) of the collapse cycle, and e_c is where its two "// &
-            "dominant eigenvalues merge into a complex pair (bisected in real(16)): "// &
+            [character(len=60) :: "ecrit", "ecrit_map"], &
+            "For rows of p equal spheres (a = d = v0 = 1) a fine scan of e around the edge "// &
+            "decides each point by the engine's labelled answer: separated (with the scale of "// &
+            "its last closing rates), collapse (certified, or bounded), or undecided, counted "// &
+            "apart and never as either ("//field("ecrit", "ecrit.rows", how_col)//"; "// &
+            "ecrit.tsv, the runs of outcomes in ecrit_map.tsv). Each edge is printed with "// &
+            "only the decimals its bracket earns. What was found: the collapse set is not "// &
+            "one interval [0, e_c) near its edge. "//field("ecrit", "ecrit.mixed_rows")// &
+            " rows have a separated point below a collapsing one, the first at p = "// &
+            field("ecrit", "ecrit.first_mixed_p")//"; the widest such band spans "// &
+            short("ecrit", "ecrit.band_relative_max")//" (1 - e_c). "// &
+            field("ecrit", "ecrit.undecided_rows")//" rows have undecided points: in long "// &
+            "rows the "// &
+            "collapse side is not decided within the collision cap, and only the lowest "// &
+            "separated point is an edge. The edge depends on tol (a row that separates at "// &
+            "rates below tol reads as a collapse): from tol = 2e-34 to 1e-300 the lowest "// &
+            "separated point falls by up to "//short("ecrit", "ecrit.deep_shift_max")// &
+            " (1 - e_c) (ecrit_robust.tsv); real64 at the same tol differs from real(16) at "// &
+            field("ecrit", "ecrit.real64_differ")//" points. The rate map of the collapse "// &
+            "cycle of the shortest rows gives e_c where its two dominant eigenvalues merge: "// &
             short("ecrit", "ecrit.p3")//" = 7 - 4 sqrt(3) for p = 3 and "// &
-            short("ecrit", "ecrit.p4")//" = 3 - 2 sqrt(2) for p = 4. Where the edge of long "// &
-            "rows is bisected against runs still undecided at max_collisions ("// &
-            field("ecrit", "ecrit.edges_capped")//" rows) it is an estimate that moves "// &
-            "with the cap, not a certified bound; 1 - e_c ~ "// &
-            short("ecrit", "ecrit.power_c")//" p^(-"//short("ecrit", "ecrit.power_beta")//").")
+            short("ecrit", "ecrit.p4")//" = 3 - 2 sqrt(2) for p = 4. Fits of the lowest "// &
+            "separated point over this run's rows from p = 8: 1 - e_c ~ "// &
+            short("ecrit", "ecrit.power_c")//" p^(-"// &
+            short("ecrit", "ecrit.power_beta")//"), "//short("ecrit", "ecrit.c_over_p")// &
+            "/p, McNamara-Young K = "//short("ecrit", "ecrit.mcnamara_young_k")//". The "// &
+            "full sweep p = 3 ... 128 is `make ecrit-full` (results/ecrit_full/).")
     end subroutine sections_beyond
 
     !> answers.tsv, and the head of summary.md with the table of every answer.

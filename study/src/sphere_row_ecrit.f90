@@ -14,41 +14,45 @@
 !> det(M(e) - lambda) changes sign: bisected in real(16), that is e_c of the
 !> pattern to the resolution of the kind.
 module sphere_row_ecrit
-    use sphere_row, only: dp, qp, scene_t, run_t, event_log_t, scene_dp_t, run_dp_t, &
-        simulate, status_normal, status_invalid
+    use sphere_row, only: dp, qp, itoa, scene_t, run_t, event_log_t, scene_dp_t, run_dp_t, &
+        simulate, status_normal, status_invalid, answer_exact
     use sphere_row_analysis, only: rate_map, sequence_of
     use, intrinsic :: iso_fortran_env, only: int8
     implicit none
     private
-    public :: outcome_finite, outcome_cycle, outcome_fallback, outcome_capped
+    public :: outcome_finite, outcome_certified, outcome_bounded, outcome_undecided, n_outcomes
     public :: outcome_of, outcome_word, is_finite, outcome_changes
     public :: boundary_t, row_runner_t, runner_init, bisect_boundary, power_fit
-    public :: collapse_cycle, group_map, char_poly, dominant_pair, dominant_is_real
+    public :: collapse_certified, group_map, char_poly, dominant_pair, dominant_is_real
     public :: rate_map_critical, closed_form_t, closed_form_search
     public :: ecrit_settings_t, ecrit_row_t, ecrit_row, row_estimate, mcnamara_young_k, &
-        mcnamara_young_e, row_bytes, row_from_bytes
+        mcnamara_young_e, row_bytes, row_from_bytes, scan_point, edge_t, edge_of, digits_of, &
+        decimal_text
 
-    !> The run ended normally without a collapse: finitely many collisions.
+    !> The run separated: it ended normally, no collapse limit taken, after
+    !> finitely many collisions (its answer exact).
     integer, parameter :: outcome_finite = 1
-    !> The engine took a certified cycle limit: the row collapses.
-    integer, parameter :: outcome_cycle = 2
-    !> A collapse limit was taken only by the fallback: the rates and gaps of a
-    !> group fell below tol, but no cycle was certified.
-    integer, parameter :: outcome_fallback = 3
-    !> The safety net max_collisions ended the run before any collapse: the
-    !> outcome is not decided.
-    integer, parameter :: outcome_capped = 4
+    !> A collapse limit was taken and every limit is exact or certified.
+    integer, parameter :: outcome_certified = 2
+    !> A collapse limit was taken, at least one of them bounded (its group's
+    !> velocities are known within a bound, not proven to be a collapse).
+    integer, parameter :: outcome_bounded = 3
+    !> No limit taken and the run did not separate: the work budget
+    !> (max_collisions) was spent, or it ended at tolerance. Not decided.
+    integer, parameter :: outcome_undecided = 4
+    !> Number of outcome codes.
+    integer, parameter :: n_outcomes = 4
 
     !> Bisection of the upper edge of the region that does not end finitely.
     type :: boundary_t
         !> Largest e seen that does not end finitely, and its outcome.
         real(qp) :: e_low = 0.0_qp
-        integer :: outcome_low = outcome_capped
+        integer :: outcome_low = outcome_undecided
         !> Smallest e above e_low seen to end finitely.
         real(qp) :: e_high = 1.0_qp
-        !> Largest e seen with a certified cycle limit (-1 if none): the lower
+        !> Largest e seen with only exact or certified limits (-1 if none): the lower
         !> end of the bracket whose both ends the collapse machinery certifies.
-        real(qp) :: e_cycle = -1.0_qp
+        real(qp) :: e_certified = -1.0_qp
         !> Largest e seen with any collapse limit (-1 if none).
         real(qp) :: e_collapse = -1.0_qp
         !> Runs made by the bisection.
@@ -111,13 +115,24 @@ module sphere_row_ecrit
         integer :: max_collisions = 50000
         !> The safety net of the fine stage (its runs near e_c are long).
         integer :: max_collisions_fine = 1000000
-        !> Runs of the fit of n against e - e_c: their number, and the range
-        !> of e - e_c relative to 1 - e_c.
-        integer :: n_fit = 8
-        real(qp) :: fit_delta_max = 1.0e-1_qp, fit_delta_min = 1.0e-6_qp
-        !> Runs with fewer collisions are left out of the fit (the asymptote
-        !> does not hold there yet).
-        integer :: fit_n_min = 200
+        !> The scan of the edge: its points, its kind's tolerance and safety
+        !> net, and its window, centred on the bisected edge e_b with a
+        !> half-width of `window` (1 - e_b), doubled at most `widen_max` times
+        !> while the outcomes reach an end of it (see scan_edge). Rows from
+        !> p_long on take n_scan_long points: their collapse side is undecided
+        !> within max_collisions_scan, so its points cost the whole budget and
+        !> tell nothing more (measured with the defaults: p = 20 still decides
+        !> its collapses at e = 0.690 and 0.697, p = 24 not at 0.725, 0.735).
+        integer :: n_scan = 200, n_scan_long = 200, p_long = huge(1)
+        real(qp) :: tol_scan = 2.0e-34_qp
+        integer :: max_collisions_scan = 100000
+        real(qp) :: window = 2.0e-2_qp
+        integer :: widen_max = 3
+        !> Rows up to this p are scanned again on the same points in real64
+        !> at tol_scan and in real(16) at the deeper tol_deep: the band as a
+        !> property of the row, not of the kind or the tolerance.
+        integer :: robust_p_max = 10
+        real(qp) :: tol_deep = 1.0e-300_qp
         !> Rows up to this p also get e_c from the rate map of their cycle.
         integer :: map_p_max = 6
         !> Longest collision pattern looked for as the collapse cycle.
@@ -141,9 +156,15 @@ module sphere_row_ecrit
         !> Kind of the runs that gave the edge (dp or qp), and all runs made.
         integer :: precision = dp
         integer :: runs = 0
-        !> n ~ c (e - e_c)^(-alpha) above e_c, from n_fit_used runs.
-        real(qp) :: c = 0.0_qp, alpha = 0.0_qp
-        integer :: n_fit_used = 0
+        !> The scan of the edge: its window [e_from, e_to] of size(outcomes)
+        !> evenly spaced points and the doublings it took; each point's
+        !> outcome and, if it separated, the decade of its separation scale
+        !> (the largest final closing rate over v0; 0 otherwise). Rows up to
+        !> robust_p_max also hold the outcomes of the same points in real64
+        !> and at tol_deep (empty otherwise).
+        real(qp) :: e_from = 0.0_qp, e_to = 0.0_qp
+        integer :: widenings = 0
+        integer, allocatable :: outcomes(:), decades(:), outcomes_dp(:), outcomes_deep(:)
         !> e_c from the rate map of the collapse cycle, if has_map.
         logical :: has_map = .false.
         real(qp) :: e_map = 0.0_qp
@@ -153,6 +174,32 @@ module sphere_row_ecrit
         !> A closed form of e_map, if one was found.
         type(closed_form_t) :: form
     end type ecrit_row_t
+
+    !> What a scan says of the edge (edge_of): the highest collapse and the
+    !> lowest separation on it, each with the width of the interval it is
+    !> known to within and the decimals that width earns; the mixed band
+    !> between them where they cross; the counts of each outcome.
+    type :: edge_t
+        !> Highest point that collapsed (-1 if none) and lowest that separated
+        !> (2 if none); the interval [collapse_max, collapse_max + collapse_width]
+        !> holds the top of the collapse set on this grid (undecided points
+        !> above widen it), [finite_min - finite_width, finite_min] the bottom
+        !> of the separating set; decimals of each, from those widths.
+        real(qp) :: collapse_max = -1.0_qp, finite_min = 2.0_qp
+        real(qp) :: collapse_width = 0.0_qp, finite_width = 0.0_qp
+        integer :: collapse_digits = 0, finite_digits = 0
+        !> Highest point whose collapse is certified (no bounded limit; -1 if
+        !> none).
+        real(qp) :: certified_max = -1.0_qp
+        !> True if finite_min < collapse_max: outcomes mix over that band, of
+        !> band_points points, band_collapses of them collapses.
+        logical :: mixed = .false.
+        integer :: band_points = 0, band_collapses = 0
+        !> Points of each outcome (outcome_* order) over the whole window.
+        integer :: counts(n_outcomes) = 0
+        !> Decade of the separation scale of the lowest separated point.
+        integer :: finite_decade = 0
+    end type edge_t
 
     !> Largest integer coefficient of the candidate polynomials per degree
     !> (degrees 1 ... 4): kept small so the search stays a screen of a few
@@ -173,7 +220,7 @@ module sphere_row_ecrit
     integer, parameter :: root_iterations = 2000
     !> The bytes of a row (row_bytes): its reals, its closed form's text, then
     !> its integers, whose count grows with its cycle.
-    integer, parameter :: row_reals = 9, row_fixed_ints = 11
+    integer, parameter :: row_reals = 9, row_fixed_ints = 14
     integer, parameter :: row_text_bytes = form_text_len
 
 contains
@@ -182,9 +229,9 @@ contains
     !> settings `s`. A coarse stage in real64 (fast, tolerance s%tol_coarse)
     !> scans e and bisects the edge of the finite region; for p <= s%p_fine a
     !> fine stage in real(16) with the tiny s%tol bisects it again from the
-    !> coarse bracket widened by s%fine_margin. Then the fit of n above the
-    !> edge and, for p <= s%map_p_max, the rate map of the collapse cycle with
-    !> a search for its closed form.
+    !> coarse bracket widened by s%fine_margin. For p <= s%map_p_max the rate
+    !> map of the collapse cycle with a search for its closed form. Last the
+    !> scan of the edge (scan_edge) around the bisected bracket.
     subroutine ecrit_row(p, s, row)
         integer, intent(in) :: p
         type(ecrit_settings_t), intent(in) :: s
@@ -202,7 +249,7 @@ contains
             call coarse%outcome(e_grid(j), outcomes(j), n)
         end do
         row%changes = outcome_changes([outcomes, outcome_finite])
-        row%capped = count(outcomes == outcome_capped)
+        row%capped = count(outcomes == outcome_undecided)
         ! 2. the edge above the highest scan point that does not end finitely
         top = 0
         do j = s%n_grid - 1, 1, -1
@@ -213,7 +260,7 @@ contains
         end do
         e_lo = 0.0_qp
         e_hi = e_grid(1)
-        o_lo = outcome_capped
+        o_lo = outcome_undecided
         if (top > 0) then
             e_lo = e_grid(top)
             e_hi = 1.0_qp
@@ -221,8 +268,8 @@ contains
             o_lo = outcomes(top)
         end if
         do j = 1, top
-            if (outcomes(j) == outcome_cycle) row%b%e_cycle = e_grid(j)
-            if (outcomes(j) == outcome_cycle .or. outcomes(j) == outcome_fallback) then
+            if (outcomes(j) == outcome_certified) row%b%e_certified = e_grid(j)
+            if (outcomes(j) == outcome_certified .or. outcomes(j) == outcome_bounded) then
                 row%b%e_collapse = e_grid(j)
             end if
         end do
@@ -238,7 +285,7 @@ contains
             call fine%outcome(e_hi, o_hi, n)
             row%runs = row%runs + 2
             if (.not. is_finite(o_lo) .and. is_finite(o_hi)) then
-                b_fine%e_cycle = row%b%e_cycle
+                b_fine%e_certified = row%b%e_certified
                 b_fine%e_collapse = row%b%e_collapse
                 call bisect_boundary(fine, e_lo, e_hi, o_lo, s%resolution, s%max_steps, b_fine)
                 row%b = b_fine
@@ -262,12 +309,8 @@ contains
             row%has_map = stat == status_normal
             if (row%has_map) call closed_form_search(row%e_map, closed_tol, row%form)
         end if
-        ! 5. n against e - e_c above e_c, in the kind of the edge
-        if (row%precision == qp) then
-            call fit_growth(fine, s, row)
-        else
-            call fit_growth(coarse, s, row)
-        end if
+        ! 5. the scan of the edge
+        call scan_edge(p, s, row)
 
     contains
 
@@ -284,45 +327,162 @@ contains
             call sequence_of(events, pairs, before_collapse=.true.)
             do part = 1, size(parts, 2)
                 n_kept = parts(1, part)*size(pairs)/parts(2, part)
-                call collapse_cycle(pairs(:n_kept), cycle_repeats, s%period_max, cycle)
+                call collapse_certified(pairs(:n_kept), cycle_repeats, s%period_max, cycle)
                 if (size(cycle) > 0) return
             end do
         end subroutine cycle_of
 
     end subroutine ecrit_row
 
-    !> Least-squares fit of n ~ c (e - e_c)^(-alpha) over finite runs with at
-    !> least s%fit_n_min collisions, e - e_c spread logarithmically over
-    !> [fit_delta_min, fit_delta_max] (1 - e_c), none closer than ten widths of
-    !> the bracket; e_c is the rate map's value where there is one, else the
-    !> lowest e seen to end finitely.
-    subroutine fit_growth(runner, s, row)
-        type(row_runner_t), intent(inout) :: runner
+    !> The scan of the edge: s%n_scan evenly spaced points (s%n_scan_long from
+    !> p = s%p_long on) over a window
+    !> centred on the bisected edge e_b with half-width s%window (1 - e_b),
+    !> each run in real(16) at s%tol_scan and decided by its labelled answer
+    !> (outcome_of). Where a separated point lies in the window's lowest tenth
+    !> or a collapse in its highest, the band may reach past the window: its
+    !> half-width doubles, at most s%widen_max times. Rows up to
+    !> s%robust_p_max run the same points again in real64 at s%tol_scan and in
+    !> real(16) at s%tol_deep.
+    subroutine scan_edge(p, s, row)
+        integer, intent(in) :: p
         type(ecrit_settings_t), intent(in) :: s
         type(ecrit_row_t), intent(inout) :: row
-        real(qp) :: e_ref, delta(s%n_fit), n(s%n_fit), slope, t
-        logical :: use(s%n_fit)
-        integer :: k, outcome, count
-        integer, parameter :: widths = 10
-        e_ref = row%b%e_high
-        if (row%has_map) e_ref = row%e_map
-        do k = 1, s%n_fit
-            t = 0.0_qp
-            if (s%n_fit > 1) t = real(k - 1, qp)/(s%n_fit - 1)
-            delta(k) = (1.0_qp - e_ref)*s%fit_delta_max*(s%fit_delta_min/s%fit_delta_max)**t
-            use(k) = .false.
-            n(k) = 1.0_qp
-            if (e_ref + delta(k) >= 1.0_qp) cycle
-            if (delta(k) < widths*(row%b%e_high - row%b%e_low)) cycle
-            call runner%outcome(e_ref + delta(k), outcome, count)
-            row%runs = row%runs + 1
-            n(k) = real(max(count, 1), qp)
-            use(k) = is_finite(outcome) .and. count >= s%fit_n_min
+        type(row_runner_t) :: runner
+        real(qp) :: centre, half
+        integer :: n, tenth, lowest, highest, k
+        centre = row%b%e_high
+        half = s%window*(1.0_qp - centre)
+        n = s%n_scan
+        if (p >= s%p_long) n = s%n_scan_long
+        tenth = max(1, n/10)
+        call runner_init(runner, p, qp, s%tol_scan, s%max_collisions_scan)
+        do k = 0, s%widen_max
+            row%widenings = k
+            row%e_from = max(centre - half, 0.0_qp)
+            row%e_to = min(centre + half, 0.5_qp*(1.0_qp + centre))
+            call scan_points(runner, row%outcomes, row%decades)
+            lowest = findloc(row%outcomes, outcome_finite, dim=1)
+            highest = max(findloc(row%outcomes, outcome_certified, dim=1, back=.true.), &
+                findloc(row%outcomes, outcome_bounded, dim=1, back=.true.))
+            if ((lowest == 0 .or. lowest > tenth) .and. highest <= n - tenth) exit
+            if (row%e_from <= 0.0_qp) exit
+            half = 2.0_qp*half
         end do
-        call power_fit(delta, n, use, row%c, slope, row%n_fit_used)
-        row%alpha = -slope
-    end subroutine fit_growth
+        allocate (row%outcomes_dp(0), row%outcomes_deep(0))
+        if (p > s%robust_p_max) return
+        call runner_init(runner, p, dp, s%tol_scan, s%max_collisions_scan)
+        call scan_points(runner, row%outcomes_dp)
+        call runner_init(runner, p, qp, s%tol_deep, s%max_collisions_scan)
+        call scan_points(runner, row%outcomes_deep)
 
+    contains
+
+        !> The outcome of every point of the window by `run`, and the decade
+        !> of each separation scale.
+        subroutine scan_points(run, outcomes, decades)
+            type(row_runner_t), intent(inout) :: run
+            integer, allocatable, intent(out) :: outcomes(:)
+            integer, allocatable, intent(out), optional :: decades(:)
+            real(qp) :: scale
+            integer :: j, collisions
+            allocate (outcomes(n))
+            if (present(decades)) allocate (decades(n), source=0)
+            do j = 1, n
+                call run%outcome(scan_point(row, j), outcomes(j), collisions)
+                row%runs = row%runs + 1
+                if (.not. present(decades) .or. outcomes(j) /= outcome_finite) cycle
+                scale = maxval(abs(run%run%dy))
+                if (scale > 0.0_qp) decades(j) = floor(log10(scale))
+                if (scale <= 0.0_qp) decades(j) = minexponent(scale)
+            end do
+        end subroutine scan_points
+
+    end subroutine scan_edge
+
+    !> Point j of the row's scan window.
+    pure real(qp) function scan_point(row, j) result(e)
+        type(ecrit_row_t), intent(in) :: row
+        integer, intent(in) :: j
+        e = row%e_from + (row%e_to - row%e_from)*real(j - 1, qp)/real(size(row%outcomes) - 1, qp)
+    end function scan_point
+
+    !> The edge told by a scan of `outcomes` at evenly spaced points e_from
+    !> ... e_to (see edge_t). The spacing h bounds each edge: the top of the
+    !> collapse set lies below the next point above collapse_max that did not
+    !> collapse and is not undecided, the bottom of the separating set above
+    !> the point below finite_min that is not undecided.
+    pure function edge_of(e_from, e_to, outcomes, decades) result(edge)
+        real(qp), intent(in) :: e_from, e_to
+        integer, intent(in) :: outcomes(:), decades(:)
+        type(edge_t) :: edge
+        real(qp) :: h
+        integer :: n, i_c, j_c, i_f, j_f, k
+        logical :: collapse(size(outcomes))
+        n = size(outcomes)
+        h = (e_to - e_from)/real(n - 1, qp)
+        do k = 1, n_outcomes
+            edge%counts(k) = count(outcomes == k)
+        end do
+        collapse = outcomes == outcome_certified .or. outcomes == outcome_bounded
+        i_c = findloc(collapse, .true., dim=1, back=.true.)
+        i_f = findloc(outcomes, outcome_finite, dim=1)
+        k = findloc(outcomes, outcome_certified, dim=1, back=.true.)
+        if (k > 0) edge%certified_max = at(k)
+        if (i_c > 0) then
+            j_c = i_c
+            do while (j_c < n)
+                if (outcomes(j_c + 1) == outcome_finite) exit
+                j_c = j_c + 1
+            end do
+            edge%collapse_max = at(i_c)
+            edge%collapse_width = at(j_c) + h - at(i_c)
+            edge%collapse_digits = digits_of(edge%collapse_width)
+        end if
+        if (i_f > 0) then
+            j_f = i_f
+            do while (j_f > 1)
+                if (collapse(j_f - 1)) exit
+                j_f = j_f - 1
+            end do
+            edge%finite_min = at(i_f)
+            edge%finite_width = at(i_f) - at(j_f) + h
+            edge%finite_digits = digits_of(edge%finite_width)
+            edge%finite_decade = decades(i_f)
+        end if
+        edge%mixed = i_c > 0 .and. i_f > 0 .and. i_f < i_c
+        if (edge%mixed) then
+            edge%band_points = i_c - i_f + 1
+            edge%band_collapses = count(collapse(i_f:i_c))
+        end if
+
+    contains
+
+        pure real(qp) function at(j)
+            integer, intent(in) :: j
+            at = e_from + (e_to - e_from)*real(j - 1, qp)/real(n - 1, qp)
+        end function at
+
+    end function edge_of
+
+    !> Decimals earned by a value known to within `width`: down to the place
+    !> of the width's leading digit (at least 1), so that the last decimal
+    !> written is the first uncertain one.
+    elemental integer function digits_of(width) result(digits)
+        real(qp), intent(in) :: width
+        digits = 1
+        if (width > 0.0_qp) digits = max(1, -floor(log10(width)))
+    end function digits_of
+
+    !> x rounded to `decimals` places, as text (0.3972).
+    function decimal_text(x, decimals) result(text)
+        real(qp), intent(in) :: x
+        integer, intent(in) :: decimals
+        character(len=:), allocatable :: text
+        character(len=64) :: buffer
+        write (buffer, "(f0."//itoa(decimals)//")") x
+        text = trim(adjustl(buffer))
+        if (text(1:1) == ".") text = "0"//text
+    end function decimal_text
     !> The row as bytes, every number with all its bits (to move it between
     !> processes; row_from_bytes reads it back).
     pure function row_bytes(row) result(bytes)
@@ -331,11 +491,12 @@ contains
         real(qp) :: reals(row_reals)
         integer, allocatable :: ints(:)
         integer(int8), parameter :: mold(1) = 0_int8
-        reals = [row%b%e_low, row%b%e_high, row%b%e_cycle, row%b%e_collapse, row%c, row%alpha, &
-            row%e_map, row%e_pattern, row%form%value]
+        reals = [row%b%e_low, row%b%e_high, row%b%e_certified, row%b%e_collapse, row%e_from, &
+            row%e_to, row%e_map, row%e_pattern, row%form%value]
         ints = [row%p, row%b%outcome_low, row%b%steps, row%changes, row%capped, row%precision, &
-            row%runs, row%n_fit_used, merge(1, 0, row%has_map), merge(1, 0, row%form%found), &
-            size(row%cycle), row%cycle]
+            row%runs, row%widenings, merge(1, 0, row%has_map), merge(1, 0, row%form%found), &
+            size(row%cycle), size(row%outcomes), size(row%outcomes_dp), size(row%outcomes_deep), &
+            row%cycle, row%outcomes, row%decades, row%outcomes_dp, row%outcomes_deep]
         bytes = [transfer(reals, mold), transfer(row%form%text, mold), transfer(ints, mold)]
     end function row_bytes
 
@@ -347,7 +508,7 @@ contains
         integer, intent(out) :: stat
         real(qp) :: reals(row_reals)
         integer, allocatable :: ints(:)
-        integer :: real_bytes, int_bytes, n_ints
+        integer :: real_bytes, int_bytes, n_ints, k, sizes(4)
         stat = status_invalid
         real_bytes = size(transfer(reals, [0_int8]))
         int_bytes = size(transfer(0, [0_int8]))
@@ -358,13 +519,15 @@ contains
         row%form%text = transfer(bytes(real_bytes + 1:real_bytes + row_text_bytes), row%form%text)
         allocate (ints(n_ints))
         ints = transfer(bytes(real_bytes + row_text_bytes + 1:), ints)
-        if (ints(row_fixed_ints) /= n_ints - row_fixed_ints) return
+        sizes = ints(row_fixed_ints - 3:row_fixed_ints)
+        if (any(sizes < 0)) return
+        if (sum(sizes) + sizes(2) /= n_ints - row_fixed_ints) return
         row%b%e_low = reals(1)
         row%b%e_high = reals(2)
-        row%b%e_cycle = reals(3)
+        row%b%e_certified = reals(3)
         row%b%e_collapse = reals(4)
-        row%c = reals(5)
-        row%alpha = reals(6)
+        row%e_from = reals(5)
+        row%e_to = reals(6)
         row%e_map = reals(7)
         row%e_pattern = reals(8)
         row%form%value = reals(9)
@@ -375,10 +538,19 @@ contains
         row%capped = ints(5)
         row%precision = ints(6)
         row%runs = ints(7)
-        row%n_fit_used = ints(8)
+        row%widenings = ints(8)
         row%has_map = ints(9) == 1
         row%form%found = ints(10) == 1
-        row%cycle = ints(row_fixed_ints + 1:)
+        k = row_fixed_ints
+        row%cycle = ints(k + 1:k + sizes(1))
+        k = k + sizes(1)
+        row%outcomes = ints(k + 1:k + sizes(2))
+        k = k + sizes(2)
+        row%decades = ints(k + 1:k + sizes(2))
+        k = k + sizes(2)
+        row%outcomes_dp = ints(k + 1:k + sizes(3))
+        k = k + sizes(3)
+        row%outcomes_deep = ints(k + 1:k + sizes(4))
         stat = status_normal
     end subroutine row_from_bytes
 
@@ -470,30 +642,31 @@ contains
     !> The outcome of a finished real(16) run (one of the outcome_* codes).
     pure integer function outcome_of_qp(run) result(outcome)
         type(run_t), intent(in) :: run
-        outcome = outcome_code(run%limits%n, run%limits%closed_form, run%status)
+        outcome = outcome_code(run%limits%n, run%limits%bounded, run%status, run%answer)
     end function outcome_of_qp
 
     !> The outcome of a finished real64 run.
     pure integer function outcome_of_dp(run) result(outcome)
         type(run_dp_t), intent(in) :: run
-        outcome = outcome_code(run%limits%n, run%limits%closed_form, run%status)
+        outcome = outcome_code(run%limits%n, run%limits%bounded, run%status, run%answer)
     end function outcome_of_dp
 
-    !> A certified cycle limit decides a collapse; a fallback limit alone is
-    !> reported as such; no collapse and a normal end is a finite run; the
-    !> safety net leaves it undecided.
-    pure integer function outcome_code(collapses, cycle_limits, status) result(outcome)
-        integer, intent(in) :: collapses, cycle_limits, status
+    !> The outcome told by a run's labelled answer: a collapse where a limit
+    !> was taken (bounded if any limit is), a separation where it ended
+    !> normally with an exact answer and no limit, else undecided (the budget
+    !> spent, or the rates fell below tol without a limit).
+    pure integer function outcome_code(collapses, bounded, status, answer) result(outcome)
+        integer, intent(in) :: collapses, bounded, status, answer
         if (collapses > 0) then
-            if (cycle_limits > 0) then
-                outcome = outcome_cycle
+            if (bounded > 0) then
+                outcome = outcome_bounded
             else
-                outcome = outcome_fallback
+                outcome = outcome_certified
             end if
-        else if (status == status_normal) then
+        else if (status == status_normal .and. answer == answer_exact) then
             outcome = outcome_finite
         else
-            outcome = outcome_capped
+            outcome = outcome_undecided
         end if
     end function outcome_code
 
@@ -503,13 +676,13 @@ contains
         character(len=:), allocatable :: word
         select case (outcome)
         case (outcome_finite)
-            word = "finite"
-        case (outcome_cycle)
-            word = "cycle"
-        case (outcome_fallback)
-            word = "fallback"
+            word = "separated"
+        case (outcome_certified)
+            word = "certified"
+        case (outcome_bounded)
+            word = "bounded"
         case default
-            word = "capped"
+            word = "undecided"
         end select
     end function outcome_word
 
@@ -564,8 +737,8 @@ contains
         subroutine note(e, o)
             real(qp), intent(in) :: e
             integer, intent(in) :: o
-            if (o == outcome_cycle) b%e_cycle = max(b%e_cycle, e)
-            if (o == outcome_cycle .or. o == outcome_fallback) then
+            if (o == outcome_certified) b%e_certified = max(b%e_certified, e)
+            if (o == outcome_certified .or. o == outcome_bounded) then
                 b%e_collapse = max(b%e_collapse, e)
             end if
         end subroutine note
@@ -607,7 +780,7 @@ contains
     !> The collapse cycle of a collision sequence: the shortest pattern of at
     !> most `period_max` collisions that its end repeats `repeats` times in a
     !> row. `cycle` has size 0 if there is none.
-    pure subroutine collapse_cycle(pairs, repeats, period_max, cycle)
+    pure subroutine collapse_certified(pairs, repeats, period_max, cycle)
         integer, intent(in) :: pairs(:), repeats, period_max
         integer, allocatable, intent(out) :: cycle(:)
         integer :: n, q
@@ -619,7 +792,7 @@ contains
             end if
         end do
         allocate (cycle(0))
-    end subroutine collapse_cycle
+    end subroutine collapse_certified
 
     !> The rate map of one period of `cycle` on the gaps it touches, lo..hi
     !> (spheres lo..hi+1, masses m): a of size (hi-lo+1, hi-lo+1). The impulses

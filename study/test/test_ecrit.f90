@@ -1,10 +1,11 @@
 !> Tests of the critical restitution of the struck row: the rate map of the
-!> collapse cycle against the closed forms of p = 3 and p = 4, the bisected
-!> edge around them, and e_c growing with p.
+!> collapse cycle against the closed forms of p = 3 and p = 4, the scanned
+!> edge around them, e_c growing with p, and what a scan says of its edge.
 module test_ecrit
     use sphere_row, only: qp, str, itoa, status_normal
     use sphere_row_ecrit, only: ecrit_settings_t, ecrit_row_t, ecrit_row, rate_map_critical, &
-        row_estimate, outcome_word
+        edge_t, edge_of, digits_of, decimal_text, outcome_certified, outcome_bounded, &
+        outcome_finite, outcome_undecided
     use testsuite, only: error_t, unittest_t, new_unittest, check
     implicit none
     private
@@ -12,8 +13,9 @@ module test_ecrit
 
     !> Agreement asked of the rate map with a closed form (30-digit kind).
     real(qp), parameter :: closed_tol = 1.0e-25_qp
-    !> Cheap settings for the tests: no fit runs, a coarse scan.
-    integer, parameter :: test_grid = 10, test_fit = 2
+    !> Cheap settings for the tests: a coarse locating scan, a short scan of
+    !> the edge.
+    integer, parameter :: test_grid = 10, test_scan = 24
 
 contains
 
@@ -24,7 +26,8 @@ contains
             new_unittest("rate_map_cycle_p3", test_map_p3), &
             new_unittest("rate_map_cycle_p4", test_map_p4), &
             new_unittest("rows_3_and_4", test_rows), &
-            new_unittest("e_crit_increases", test_increasing) &
+            new_unittest("e_crit_increases", test_increasing), &
+            new_unittest("edge_of_a_scan", test_edge_of) &
             ]
     end function collect_ecrit
 
@@ -57,59 +60,89 @@ contains
     end subroutine check_rate_map
 
     !> The whole row procedure for p = 3 and 4: the rate map found from the
-    !> row's own run matches the closed form, and the bisected bracket
-    !> [e_low, e_high], shifted up by the fallback's bias, contains it.
+    !> row's own run matches the closed form, and the scan of the edge (at a
+    !> deep tol) is clean, with no separated point below the closed form (the
+    !> rows below it collapse) and the closed form within its bracket.
     subroutine test_rows(error)
         type(error_t), allocatable, intent(out) :: error
         type(ecrit_settings_t) :: s
         type(ecrit_row_t) :: row
-        real(qp) :: closed(3:4), e_c
-        character(len=:), allocatable :: method
-        !> The fallback's upward bias of the edge (about 2e-8 here), allowed.
-        real(qp), parameter :: bias = 1.0e-7_qp
+        type(edge_t) :: g
+        real(qp) :: closed(3:4)
         integer :: p
         closed = [7.0_qp - 4.0_qp*sqrt(3.0_qp), 3.0_qp - 2.0_qp*sqrt(2.0_qp)]
         s%n_grid = test_grid
-        s%n_fit = test_fit
+        s%n_scan = test_scan
+        s%tol_scan = 1.0e-300_qp
+        s%robust_p_max = 0
         do p = 3, 4
             call ecrit_row(p, s, row)
-            call row_estimate(row, s%map_window, e_c, method)
-            call check(error, row%has_map .and. method == "rate_map", "p = "//str(real(p, qp)) &
-                //": no rate-map value; edge outcome "//outcome_word(row%b%outcome_low))
+            call check(error, row%has_map, "p = "//itoa(p)//": no rate-map value")
             if (allocated(error)) return
             call check(error, abs(row%e_map - closed(p)) <= closed_tol, &
                 "rate map "//str(row%e_map))
             if (allocated(error)) return
-            call check(error, row%b%e_low - bias <= closed(p) .and. closed(p) <= row%b%e_high, &
-                "bracket ["//str(row%b%e_low)//", "//str(row%b%e_high)//"]")
-            if (allocated(error)) return
-            call check(error, row%b%e_cycle > 0.0_qp .and. row%b%e_cycle <= closed(p), &
-                "largest certified collapse "//str(row%b%e_cycle))
+            g = edge_of(row%e_from, row%e_to, row%outcomes, row%decades)
+            call check(error, .not. g%mixed .and. g%finite_min > closed(p) .and. &
+                g%collapse_max <= closed(p) + g%collapse_width, "p = "//itoa(p)// &
+                ": edge ["//str(g%collapse_max)//", "//str(g%finite_min)//"], mixed "// &
+                merge("T", "F", g%mixed))
             if (allocated(error)) return
         end do
     end subroutine test_rows
 
-    !> e_c(p) grows with p over a short range of the real64 stage.
+    !> The lowest separated point of the scan grows with p over p = 3 ... 12.
     subroutine test_increasing(error)
         type(error_t), allocatable, intent(out) :: error
         type(ecrit_settings_t) :: s
         type(ecrit_row_t) :: row
-        real(qp) :: e_c, last
-        character(len=:), allocatable :: method
+        type(edge_t) :: g
+        real(qp) :: last
         integer :: p
         integer, parameter :: p_last = 12
         s%n_grid = test_grid
-        s%n_fit = test_fit
+        s%n_scan = test_scan
         s%p_fine = 0
         s%map_p_max = 0
+        s%robust_p_max = 0
         last = 0.0_qp
         do p = 3, p_last
             call ecrit_row(p, s, row)
-            call row_estimate(row, s%map_window, e_c, method)
-            call check(error, e_c > last, "e_c does not grow at p = "//str(real(p, qp)))
+            g = edge_of(row%e_from, row%e_to, row%outcomes, row%decades)
+            call check(error, g%finite_min > last .and. g%finite_min < 1.0_qp, &
+                "the edge does not grow at p = "//itoa(p)//": "//str(g%finite_min))
             if (allocated(error)) return
-            last = e_c
+            last = g%finite_min
         end do
     end subroutine test_increasing
+
+    !> edge_of on a made-up scan of 11 points over [0, 1] (h = 0.1): the ends,
+    !> the widths that undecided points add, the band where outcomes mix,
+    !> the decimals, the counts.
+    subroutine test_edge_of(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(edge_t) :: g
+        integer, parameter :: c = outcome_certified, b = outcome_bounded, &
+            f = outcome_finite, u = outcome_undecided
+        real(qp), parameter :: h = 0.1_qp, close_enough = 1.0e-30_qp
+        g = edge_of(0.0_qp, 1.0_qp, [c, c, c, u, f, c, b, u, u, f, f], &
+            [0, 0, 0, 0, -7, 0, 0, 0, 0, -3, -1])
+        call check(error, abs(g%collapse_max - 0.6_qp) < close_enough .and. &
+            abs(g%collapse_width - 3*h) < close_enough .and. &
+            abs(g%finite_min - 0.4_qp) < close_enough .and. &
+            abs(g%finite_width - 2*h) < close_enough, "ends "//str(g%collapse_max)//" + "// &
+            str(g%collapse_width)//", "//str(g%finite_min)//" - "//str(g%finite_width))
+        if (allocated(error)) return
+        call check(error, g%mixed .and. g%band_points == 3 .and. g%band_collapses == 2 .and. &
+            g%finite_decade == -7 .and. all(g%counts == [3, 4, 1, 3]) .and. &
+            abs(g%certified_max - 0.5_qp) < close_enough .and. &
+            g%collapse_digits == 1 .and. digits_of(2.5e-4_qp) == 4, "band, counts or digits")
+        if (allocated(error)) return
+        g = edge_of(0.0_qp, 1.0_qp, [c, c, u, f], [0, 0, 0, -2])
+        call check(error, .not. g%mixed .and. abs(g%collapse_width - 2.0_qp/3) < close_enough &
+            .and. abs(g%finite_width - 2.0_qp/3) < close_enough .and. &
+            decimal_text(0.39725_qp, 3) == "0.397", "a clean edge across an undecided point: "// &
+            str(g%collapse_width)//" "//decimal_text(0.39725_qp, 3))
+    end subroutine test_edge_of
 
 end module test_ecrit

@@ -98,9 +98,10 @@ contains
             "one process: the records changed, status "//itoa(stat)//" ("//msg//")")
     end subroutine test_missing
 
-    !> The row of p = 3 (cycle, rate map, closed form, fit: every field set)
-    !> read back from its bytes writes the same bytes, and its fields are
-    !> equal; a cut record is refused.
+    !> The row of p = 3 (cycle, rate map, closed form, the scans in real(16),
+    !> real64 and at the deep tol: every field set) read back from its bytes
+    !> writes the same bytes, and its fields are equal; a cut record is
+    !> refused.
     subroutine test_round_trip(error)
         type(error_t), allocatable, intent(out) :: error
         type(ecrit_settings_t) :: s
@@ -108,11 +109,12 @@ contains
         integer(int8), allocatable :: bytes(:)
         integer :: stat
         s%n_grid = 10
-        s%n_fit = 4
-        s%fit_n_min = 1
+        s%n_scan = 12
+        s%robust_p_max = 3
         call ecrit_row(3, s, row)
         call check(error, row%has_map .and. row%form%found .and. size(row%cycle) > 0 .and. &
-            row%n_fit_used > 0, "p = 3: the row does not set every field")
+            size(row%outcomes_dp) == 12 .and. size(row%outcomes_deep) == 12 .and. &
+            any(row%decades /= 0), "p = 3: the row does not set every field")
         if (allocated(error)) return
         bytes = row_bytes(row)
         call row_from_bytes(bytes, back, stat)
@@ -120,14 +122,16 @@ contains
         if (allocated(error)) return
         call check(error, all(row_bytes(back) == bytes) .and. back%e_map == row%e_map .and. &
             back%form%text == row%form%text .and. all(back%cycle == row%cycle) .and. &
-            back%b%e_low == row%b%e_low .and. (back%has_map .eqv. row%has_map), &
+            back%b%e_low == row%b%e_low .and. (back%has_map .eqv. row%has_map) .and. &
+            all(back%outcomes == row%outcomes) .and. all(back%decades == row%decades) .and. &
+            all(back%outcomes_deep == row%outcomes_deep) .and. back%e_to == row%e_to, &
             "p = 3: the row read back differs")
         if (allocated(error)) return
         call row_from_bytes(bytes(:size(bytes) - 1), back, stat)
         call check(error, stat == status_invalid, "a record one byte short was read")
         if (allocated(error)) return
         call row_from_bytes(bytes(:size(bytes) - 4), back, stat)
-        call check(error, stat == status_invalid, "a record one cycle entry short was read")
+        call check(error, stat == status_invalid, "a record one integer short was read")
     end subroutine test_round_trip
 
 end module test_ranks

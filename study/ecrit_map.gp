@@ -1,0 +1,32 @@
+# C12 study e_crit(p): the outcome map near the edge. Each row p is drawn along
+# its scan, x = (e - e_f)/(1 - e_f) with e_f its lowest separated point, one
+# colour per outcome of the engine's labelled answer (runs of equal outcomes
+# from ecrit_map.tsv).
+# Call: gnuplot -e "dir='results'; term='png'; out='results/ecrit_map.png'" study/ecrit_map.gp
+if (term eq 'png') { set terminal pngcairo size 1200,720 font ',11' } else { set terminal svg size 1200,720 dynamic font ',11' }
+set output out
+set datafile separator tab
+set datafile missing '-'
+m = dir.'/ecrit_map.tsv'
+f = dir.'/ecrit.tsv'
+# per p, read once from ecrit.tsv: e_f and the spacing h of the scan (each
+# run is drawn from half a spacing before its first point to half after its last)
+rows = system("awk -F'\t' 'NR > 1 { printf \"%s %s %s \", $1, $5, ($17 - $16)/($10 - 1) }' ".f)
+p0 = real(word(rows, 1))
+ef(p) = real(word(rows, 3*int(p - p0) + 2))
+h(p) = real(word(rows, 3*int(p - p0) + 3))
+x(e, p) = (e - ef(p))/(1 - ef(p))
+from(p) = x(column("e_first[1]") - h(p)/2, p)
+to(p) = x(column("e_last[1]") + h(p)/2, p)
+colour(o) = o eq 'separated' ? 0x1f77b4 : o eq 'certified' ? 0xd62728 : o eq 'bounded' ? 0xff7f0e : 0x7f7f7f
+set title "C12 study e_{crit}(p): outcome of each scan point near the edge (real(16), tol 2e-34)"
+set xlabel "(e - e_f) / (1 - e_f),  e_f = lowest separated point of the row"
+set ylabel "number of spheres p"
+set grid
+set key outside right top box opaque
+plot m using (strcol("scan") eq "real16" ? from(column("p")) : NaN):(column("p")):(to(column("p")) - from(column("p"))):(0):(colour(strcol("outcome"))) \
+        with vectors nohead lw 3 lc rgb variable notitle, \
+     NaN with lines lw 4 lc rgb '#1f77b4' title 'separated', \
+     NaN with lines lw 4 lc rgb '#d62728' title 'collapse, certified', \
+     NaN with lines lw 4 lc rgb '#ff7f0e' title 'collapse, bounded', \
+     NaN with lines lw 4 lc rgb '#7f7f7f' title 'undecided'
