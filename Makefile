@@ -352,14 +352,15 @@ check-results: prereqs ## regenerate the tables in build/ and compare with resul
 # wall time, ranks and threads (MPI=1 NP=... for ranks; OMP_NUM_THREADS threads)
 ecrit-full: prereqs $(ECRIT_STAMP) ## the full e_c(p) sweep p = 3 ... 128 into results/ecrit_full/
 	@mkdir -p $(ECRIT_FULL)
-	@start=$$(date +%s.%N); \
+	@set -e; start=$$(date +%s.%N); \
 	$(ECRIT_RUN) $(ECRIT_FULL_KEYS) p_max=$(ECRIT_FULL_P_MAX) out=$(ECRIT_FULL); \
 	end=$$(date +%s.%N); \
 	awk -v s=$$start -v e=$$end -v r=$(if $(filter 1,$(MPI)),$(NP),1) \
-		-v t=$${OMP_NUM_THREADS:-$$(nproc)} -v c=$$(nproc) -v k="$(ECRIT_FULL_KEYS) p_max=$(ECRIT_FULL_P_MAX)" \
+		-v t=$(if $(filter 1,$(MPI)),$(OMP_PER_RANK),$${OMP_NUM_THREADS:-$$(nproc)}) \
+		-v c=$$(nproc) -v k="$(ECRIT_FULL_KEYS) p_max=$(ECRIT_FULL_P_MAX)" \
 		'BEGIN { printf "keys\tseconds\tranks\tthreads_per_rank\tcores\n%s\t%.0f\t%d\t%s\t%d\n", k, e - s, r, t, c }' \
 		> $(ECRIT_FULL)/sweep.tsv
-	for f in ecrit ecrit_map; do for t in png svg; do \
+	set -e; for f in ecrit ecrit_map; do for t in png svg; do \
 		gnuplot -e "dir='$(ECRIT_FULL)'; term='$$t'; out='$(ECRIT_FULL)/$$f.$$t'" study/$$f.gp; done; done
 
 # c12-ecrit on a short range of p (rows 3 ... 6 take the real(16) and

@@ -9,9 +9,11 @@ set datafile separator tab
 set datafile missing '-'
 m = dir.'/ecrit_map.tsv'
 f = dir.'/ecrit.tsv'
-# per p, read once from ecrit.tsv: e_f and the spacing h of the scan (each
-# run is drawn from half a spacing before its first point to half after its last)
-rows = system("awk -F'\t' 'NR > 1 { printf \"%s %s %s \", $1, $5, ($17 - $16)/($10 - 1) }' ".f)
+# per p, read once: the spacing h of the scan from ecrit.tsv (each run is drawn
+# from half a spacing before its first point to half after its last) and e_f,
+# the first point of the first separated run of the scan in ecrit_map.tsv
+# (every digit of the grid, where ecrit.tsv rounds e_finite_min to its width)
+rows = system("awk -F'\t' 'FNR == 1 { next } NR == FNR { if ($2 == \"real16\" && $5 == \"separated\" && !($1 in ef)) ef[$1] = $3; next } { printf \"%s %s %s \", $1, ($1 in ef) ? ef[$1] : \"NaN\", ($17 - $16)/($10 - 1) }' ".m." ".f)
 p0 = real(word(rows, 1))
 ef(p) = real(word(rows, 3*int(p - p0) + 2))
 h(p) = real(word(rows, 3*int(p - p0) + 3))

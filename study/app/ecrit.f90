@@ -385,9 +385,9 @@ contains
         text = "e where the two dominant eigenvalues of the rate map of the collapse cycle "// &
             "(period "//itoa(size(rows(i)%cycle))//", from the run at e = "// &
             decimal_text(rows(i)%e_pattern, 8)//") merge into a complex pair, bisected in "// &
-            "real(16); the scan's edge (tol = "//real_str(s%tol_scan, 2)//") lies in ["// &
-            scan_text(edges(i)%collapse_max, edges(i)%collapse_digits)//", "// &
-            scan_text(edges(i)%finite_min, edges(i)%finite_digits)//"]"
+            "real(16); on the scan (tol = "//real_str(s%tol_scan, 2)//") the highest "// &
+            "collapse is "//scan_text(edges(i)%collapse_max, edges(i)%collapse_digits)// &
+            ", the lowest separation "//scan_text(edges(i)%finite_min, edges(i)%finite_digits)
     end function how
 
     !> A point of a scan's edge with its decimals, or '-' if there is none.

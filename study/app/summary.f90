@@ -151,8 +151,9 @@ contains
             short("ecrit", "ecrit.band_relative_max")//" (1 - e_c). "// &
             field("ecrit", "ecrit.undecided_rows")//" rows have undecided points: in long "// &
             "rows the "// &
-            "collapse side is not decided within the collision cap, and only the lowest "// &
-            "separated point is an edge. The edge depends on tol (a row that separates at "// &
+            "collapse side is not decided within the collision cap, and the lowest "// &
+            "separated point is only an upper bound that falls when the cap is raised. "// &
+            "The edge depends on tol (a row that separates at "// &
             "rates below tol reads as a collapse): from tol = 2e-34 to 1e-300 the lowest "// &
             "separated point falls by up to "//short("ecrit", "ecrit.deep_shift_max")// &
             " (1 - e_c) (ecrit_robust.tsv); real64 at the same tol differs from real(16) at "// &

@@ -383,17 +383,18 @@ contains
             type(row_runner_t), intent(inout) :: run
             integer, allocatable, intent(out) :: outcomes(:)
             integer, allocatable, intent(out), optional :: decades(:)
-            real(qp) :: scale
+            real(qp) :: scale, e
             integer :: j, collisions
             allocate (outcomes(n))
             if (present(decades)) allocate (decades(n), source=0)
             do j = 1, n
-                call run%outcome(scan_point(row, j), outcomes(j), collisions)
+                e = row%e_from + (row%e_to - row%e_from)*real(j - 1, qp)/real(n - 1, qp)
+                call run%outcome(e, outcomes(j), collisions)
                 row%runs = row%runs + 1
                 if (.not. present(decades) .or. outcomes(j) /= outcome_finite) cycle
                 scale = maxval(abs(run%run%dy))
                 if (scale > 0.0_qp) decades(j) = floor(log10(scale))
-                if (scale <= 0.0_qp) decades(j) = minexponent(scale)
+                if (scale <= 0.0_qp) decades(j) = floor(log10(tiny(scale)))
             end do
         end subroutine scan_points
 
@@ -520,7 +521,7 @@ contains
         allocate (ints(n_ints))
         ints = transfer(bytes(real_bytes + row_text_bytes + 1:), ints)
         sizes = ints(row_fixed_ints - 3:row_fixed_ints)
-        if (any(sizes < 0)) return
+        if (any(sizes < 0) .or. any(sizes > n_ints)) return
         if (sum(sizes) + sizes(2) /= n_ints - row_fixed_ints) return
         row%b%e_low = reals(1)
         row%b%e_high = reals(2)
