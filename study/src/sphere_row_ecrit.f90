@@ -3,11 +3,11 @@
 !> the row collapses (infinitely many collisions in finite time), above it
 !> every run ends after finitely many collisions.
 !>
-!> Two ways to it. (1) Simulation: the outcome of a run is decided by the
-!> engine's collapse machinery (a certified cycle limit, or the fallback of
-!> insignificant rates and gaps), never by a collision count; e_c is bisected
-!> between the largest e that does not end finitely and the smallest that does.
-!> (2) Rate map: the collisions of a run just below e_c repeat one pattern;
+!> Two ways to it. (1) Simulation: the outcome of a run is told by the
+!> engine's labelled answer (separated, a certified or bounded collapse, or
+!> undecided), never by a collision count; a bisection locates the edge, and a
+!> fine scan of e around it gives its two ends, the band where the outcomes
+!> mix, and the digits each end earns (scan_edge, edge_of). (2) Rate map: the collisions of a run just below e_c repeat one pattern;
 !> over one period the gap rates of the pattern's group map linearly, w -> M(e)
 !> w, and a self-similar collapse needs a real dominant eigenvalue of M. Where
 !> the two largest eigenvalues merge into a complex pair the discriminant of
@@ -23,9 +23,9 @@ module sphere_row_ecrit
     public :: outcome_finite, outcome_certified, outcome_bounded, outcome_undecided, n_outcomes
     public :: outcome_of, outcome_word, is_finite, outcome_changes
     public :: boundary_t, row_runner_t, runner_init, bisect_boundary, power_fit
-    public :: collapse_certified, group_map, char_poly, dominant_pair, dominant_is_real
+    public :: collapse_cycle, group_map, char_poly, dominant_pair, dominant_is_real
     public :: rate_map_critical, closed_form_t, closed_form_search
-    public :: ecrit_settings_t, ecrit_row_t, ecrit_row, row_estimate, mcnamara_young_k, &
+    public :: ecrit_settings_t, ecrit_row_t, ecrit_row, mcnamara_young_k, &
         mcnamara_young_e, row_bytes, row_from_bytes, scan_point, edge_t, edge_of, digits_of, &
         decimal_text
 
@@ -327,7 +327,7 @@ contains
             call sequence_of(events, pairs, before_collapse=.true.)
             do part = 1, size(parts, 2)
                 n_kept = parts(1, part)*size(pairs)/parts(2, part)
-                call collapse_certified(pairs(:n_kept), cycle_repeats, s%period_max, cycle)
+                call collapse_cycle(pairs(:n_kept), cycle_repeats, s%period_max, cycle)
                 if (size(cycle) > 0) return
             end do
         end subroutine cycle_of
@@ -592,24 +592,6 @@ contains
         end if
     end subroutine runner_outcome
 
-    !> The row's best e_c and how it was found: the rate map's value where it
-    !> lies within `window` (relative) of the simulated edge, else the middle
-    !> of the bisected bracket, named by the outcome at its lower end. The
-    !> rate map may lie above the edge: near e_c finite runs and collapses
-    !> can alternate (p = 6), and the bisection then stops at a lower change.
-    pure subroutine row_estimate(row, window, e_c, method)
-        type(ecrit_row_t), intent(in) :: row
-        real(qp), intent(in) :: window
-        real(qp), intent(out) :: e_c
-        character(len=:), allocatable, intent(out) :: method
-        e_c = 0.5_qp*(row%b%e_low + row%b%e_high)
-        method = "edge_"//outcome_word(row%b%outcome_low)
-        if (.not. row%has_map) return
-        if (abs(row%e_map - row%b%e_high) > window*row%b%e_high) return
-        e_c = row%e_map
-        method = "rate_map"
-    end subroutine row_estimate
-
     !> The constant K of the McNamara-Young scaling p = K (-ln(1-e_c))/(1-e_c)
     !> by least squares through the origin over the rows with use(j).
     pure real(qp) function mcnamara_young_k(p, e_c, use) result(k)
@@ -781,7 +763,7 @@ contains
     !> The collapse cycle of a collision sequence: the shortest pattern of at
     !> most `period_max` collisions that its end repeats `repeats` times in a
     !> row. `cycle` has size 0 if there is none.
-    pure subroutine collapse_certified(pairs, repeats, period_max, cycle)
+    pure subroutine collapse_cycle(pairs, repeats, period_max, cycle)
         integer, intent(in) :: pairs(:), repeats, period_max
         integer, allocatable, intent(out) :: cycle(:)
         integer :: n, q
@@ -793,7 +775,7 @@ contains
             end if
         end do
         allocate (cycle(0))
-    end subroutine collapse_certified
+    end subroutine collapse_cycle
 
     !> The rate map of one period of `cycle` on the gaps it touches, lo..hi
     !> (spheres lo..hi+1, masses m): a of size (hi-lo+1, hi-lo+1). The impulses
