@@ -3,16 +3,17 @@
 !> the row collapses (infinitely many collisions in finite time), above it
 !> every run ends after finitely many collisions.
 !>
-!> Two ways to it. (1) Simulation: the outcome of a run is told by the
-!> engine's labelled answer (separated, a certified or bounded collapse, or
-!> undecided), never by a collision count; a bisection locates the edge, and a
-!> fine scan of e around it gives its two ends, the band where the outcomes
-!> mix, and the digits each end earns (scan_edge, edge_of). (2) Rate map: the
-!> collisions of a run just below e_c repeat one pattern; over one period the
-!> gap rates of the pattern's group map linearly, w -> M(e) w, and a self-similar collapse needs a real dominant eigenvalue of M. Where
-!> the two largest eigenvalues merge into a complex pair the discriminant of
-!> det(M(e) - lambda) changes sign: bisected in real(16), that is e_c of the
-!> pattern to the resolution of the kind.
+!> Two ways to it. (1) Simulation: the outcome of a run is told by the engine's
+!> labelled answer (separated, a certified or bounded collapse, or undecided),
+!> never by a collision count; a bisection locates the edge, and a fine scan of
+!> e around it gives its two ends, the band where the outcomes mix, and the
+!> digits each end earns (scan_edge, edge_of). (2) Rate map: the collisions of
+!> a run just below e_c repeat one pattern; over one period the gap rates of
+!> the pattern's group map linearly, w -> M(e) w, and a self-similar collapse
+!> needs a real dominant eigenvalue of M. Where the two largest eigenvalues
+!> merge into a complex pair the discriminant of det(M(e) - lambda) changes
+!> sign: bisected in real(16), that is e_c of the pattern to the resolution of
+!> the kind.
 module sphere_row_ecrit
     use sphere_row, only: dp, qp, itoa, scene_t, run_t, event_log_t, scene_dp_t, run_dp_t, &
         simulate, status_normal, status_invalid, answer_exact
