@@ -389,7 +389,7 @@ contains
             allocate (outcomes(n))
             if (present(decades)) allocate (decades(n), source=0)
             do j = 1, n
-                e = row%e_from + (row%e_to - row%e_from)*real(j - 1, qp)/real(n - 1, qp)
+                e = grid_point(row%e_from, row%e_to, n, j)
                 call run%outcome(e, outcomes(j), collisions)
                 row%runs = row%runs + 1
                 if (.not. present(decades) .or. outcomes(j) /= outcome_finite) cycle
@@ -405,8 +405,16 @@ contains
     pure real(qp) function scan_point(row, j) result(e)
         type(ecrit_row_t), intent(in) :: row
         integer, intent(in) :: j
-        e = row%e_from + (row%e_to - row%e_from)*real(j - 1, qp)/real(size(row%outcomes) - 1, qp)
+        e = grid_point(row%e_from, row%e_to, size(row%outcomes), j)
     end function scan_point
+
+    !> Point j of n evenly spaced points from e_from to e_to: the one formula
+    !> of the scan's runs, its edge and its tables.
+    pure real(qp) function grid_point(e_from, e_to, n, j) result(e)
+        real(qp), intent(in) :: e_from, e_to
+        integer, intent(in) :: n, j
+        e = e_from + (e_to - e_from)*real(j - 1, qp)/real(n - 1, qp)
+    end function grid_point
 
     !> The edge told by a scan of `outcomes` at evenly spaced points e_from
     !> ... e_to (see edge_t). The spacing h bounds each edge: the top of the
@@ -461,7 +469,7 @@ contains
 
         pure real(qp) function at(j)
             integer, intent(in) :: j
-            at = e_from + (e_to - e_from)*real(j - 1, qp)/real(n - 1, qp)
+            at = grid_point(e_from, e_to, n, j)
         end function at
 
     end function edge_of
