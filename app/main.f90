@@ -197,27 +197,35 @@ contains
         end if
         call out%put("t_end "//real_str(run%t_end, precision_digits))
         call out%put("status "//status_word(run%status))
-        bound = run%v_bound
         if (precision_word == "auto") then
             call out%put("precision "//auto%answered)
             call out%put("certified "//trim(merge("yes", "no ", auto%certified)))
-            if (auto%certified) bound = bound + auto%v_bound
             if (auto%answered /= "dp") call out%put("not_dp "//auto%why_not_dp)
         else
             call out%put("precision "//precision_word)
         end if
+        bound = 0
+        do j = 1, size(run%v)
+            bound = max(bound, sphere_bound(j))
+        end do
         call out%put("answer "//answer_word(run%answer))
-        if (bound > 0 .or. run%answer > answer_certified) then
-            call out%put("v_bound "//real_str(bound, 2))
-        else
-            call out%put("v_bound rounding")
-        end if
+        call out%put("v_bound "//real_str(bound, 2))
         if (run%limits%n > 0) then
             call out%put("collapses "//itoa(run%limits%n))
             call out%put("closed_form_limits "//itoa(run%limits%closed_form))
             call out%put("limits_exact "//itoa(run%limits%exact))
             call out%put("limits_certified "//itoa(run%limits%certified))
+            call out%put("limits_tolerance "//itoa(run%limits%tolerance))
             call out%put("limits_bounded "//itoa(run%limits%bounded))
+            ! a collapse is proven where every limit is, in exact arithmetic;
+            ! else a merged group's exact final rates are only known to lie
+            ! within twice the velocities' bound
+            if (collapse_proven(run)) then
+                call out%put("collapse proven")
+            else
+                call out%put("collapse unproven")
+                call out%put("separation_not_excluded_below "//real_str(2*bound/scene%v0, 2))
+            end if
             call out%put("collapse_spheres "//itoa(run%limits%first)//"-" &
                 //itoa(run%limits%last))
             call out%put("collapse_t "//real_str(run%limits%t, precision_digits))
@@ -251,11 +259,7 @@ contains
         character(len=:), allocatable :: text
         character(len=16) :: buffer
         do i = 1, size(run%v)
-            bound = run%v_bound
-            if (allocated(run%v_bounds)) bound = run%v_bounds(i)
-            if (precision_word == "auto" .and. auto%certified) then
-                if (allocated(auto%v_bounds)) bound = bound + auto%v_bounds(i)
-            end if
+            bound = sphere_bound(i)
             if (.not. (bound > 0 .and. bound <= huge(bound))) then
                 call put_numbered("v", i, run%v(i))
                 cycle
@@ -284,6 +288,27 @@ contains
             call out%put("v"//itoa(i)//" "//text)
         end do
     end subroutine write_velocities
+
+    !> Sphere i's bound: its own (run%v_bounds, its rounding included) where
+    !> the run gives one, else the run's. With precision=auto and its
+    !> certificate (whose answers are exact: rounding only), the smaller of
+    !> that and the certificate's bound of the same rounding.
+    pure real(qp) function sphere_bound(i) result(bound)
+        integer, intent(in) :: i
+        bound = run%v_bound
+        if (allocated(run%v_bounds)) bound = run%v_bounds(i)
+        if (precision_word == "auto" .and. auto%certified .and. run%answer == answer_exact) then
+            if (allocated(auto%v_bounds)) bound = min(bound, auto%v_bounds(i))
+        end if
+    end function sphere_bound
+
+    !> The run took collapse limits, each proven in exact arithmetic (exact
+    !> or certified), and passed over no collision below tol.
+    pure logical function collapse_proven(r)
+        type(run_t), intent(in) :: r
+        collapse_proven = r%limits%n > 0 .and. r%limits%tolerance == 0 .and. &
+            r%limits%bounded == 0 .and. .not. r%clock%passed
+    end function collapse_proven
 
     !> floor(log10(x)) of x > 0: from real(8)'s log10 where x is in its range
     !> and the logarithm is not within 1e-9 of an integer (its rounding, about

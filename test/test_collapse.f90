@@ -41,15 +41,15 @@ contains
                 masses=1.0e3_qp**(2*u(3:p + 2) - 1), &
                 gaps=merge(0.0_qp, 2*u(23:p + 21), u(23:p + 21) < 0.3_qp), max_collisions=20000)
             call simulate(scene, long)
-            if (long%answer > answer_certified .or. long%n < 40) cycle
+            if (long%answer > answer_tolerance .or. long%n < 40) cycle
             scene%max_collisions = 10 + int((long%n - 20)*u(42))
             call simulate(scene, short)
             if (short%answer /= answer_unresolved) cycle
             checked = checked + 1
             call check(error, size(short%active, 2) > 0, "unresolved row "//itoa(i)// &
                 ": no active group named")
-            call check(error, all(abs(long%v - short%v) <= short%v_bounds*(1 + 1.0e-20_qp)), &
-                "unresolved row "//itoa(i)//": velocities moved by "// &
+            call check(error, all(abs(long%v - short%v) <= (short%v_bounds + long%v_bounds) &
+                *(1 + 1.0e-20_qp)), "unresolved row "//itoa(i)//": velocities moved by "// &
                 str(maxval(abs(long%v - short%v)))//", beyond their bounds (largest " &
                 //str(short%v_bound)//")")
             if (allocated(error)) return
@@ -157,11 +157,16 @@ contains
     !> A certified cycle's limit is taken at the accumulation time of its
     !> collisions: the same scene stepped by the fallback alone at a tolerance
     !> of 1e-60, which runs the geometric series of the collisions down to
-    !> rates of 1e-60, ends within 1e-12 of that time (p = 3 at e = 0.05,
-    !> the definition's row at e = 0.1 and a row of unequal masses). A limit
-    !> taken one period early or late is off by a whole period's duration
-    !> (4e-8 at p = 3). (The cycle's tail is summed from the last ratio of
-    !> its period times, which after three periods is good to about 1e-16.)
+    !> rates of 1e-60, ends within 1e-12 of that time (p = 3 at e = 0.05 and
+    !> the definition's row at e = 0.1). A limit taken one period early or
+    !> late is off by a whole period's duration (4e-8 at p = 3). (The cycle's
+    !> tail is summed from the last ratio of its period times, which after
+    !> three periods is good to about 1e-16.) A row of unequal masses
+    !> (1, 2, 1.5, 1) collapses in an order that never repeats: no certificate
+    !> applies, and the run steps the collapse until its rates fall below
+    !> tol, at tolerance, within 1e-12 of the time stepped to 1e-60 (a merge
+    !> of its gaps once they were below tol v0, at rates of 1e-13, had ended
+    !> it 2e-19 early and called it certified).
     subroutine test_cycle_time(error)
         type(error_t), allocatable, intent(out) :: error
         type(scene_t) :: scene
@@ -181,9 +186,17 @@ contains
             scene%closed_form_limits = .false.
             scene%tol = 1.0e-60_qp
             call simulate(scene, stepped)
-            call check(error, cycle%status == status_collapsed .and. cycle%limits%closed_form >= 1 &
-                .and. stepped%status == status_collapsed, "cycle time, scene "//itoa(i) &
-                //": not a closed-form limit and a stepped collapse")
+            if (i < 3) then
+                call check(error, cycle%status == status_collapsed .and. &
+                    cycle%limits%closed_form >= 1 .and. cycle%answer == answer_certified .and. &
+                    stepped%status == status_collapsed, "cycle time, scene "//itoa(i) &
+                    //": not a certified closed-form limit and a stepped collapse")
+            else
+                call check(error, cycle%status == status_collapsed .and. &
+                    cycle%limits%closed_form == 0 .and. cycle%answer == answer_tolerance .and. &
+                    stepped%status == status_collapsed, "cycle time, scene "//itoa(i) &
+                    //": a limit other than at tolerance, answer "//answer_word(cycle%answer))
+            end if
             call check(error, abs(cycle%t_end - stepped%t_end) <= 1.0e-12_qp, &
                 "cycle time, scene "//itoa(i)//": limit at "//str(cycle%t_end) &
                 //", stepped to "//str(stepped%t_end))
@@ -466,10 +479,12 @@ contains
     end subroutine test_touching_cascade
 
     !> Three light spheres between two heavy ones (masses over five decades):
-    !> the box, which asks for a merge in every order, is not found, but the
-    !> cascade in the engine's order settles into a contracting pattern. The
-    !> limit (spheres 2..6 at their mean) is the state the fallback reaches
-    !> after some 500,000 collisions, and is reached within 5000.
+    !> their gaps shrink by decades a shuttle while the rates fall by a
+    !> fraction of a percent, so the gaps are below tol long before the rates
+    !> are. A gap below tol is not a contact: the run steps the shuttles (in
+    !> the relative variables, below the clock's resolution) until a limit is
+    !> proven, within 300,000 collisions, where the fallback alone takes more
+    !> than 100,000; both leave spheres 2..6 at their mean, within 1e-25.
     subroutine test_light_between_heavy(error)
         type(error_t), allocatable, intent(out) :: error
         type(scene_t) :: scene
@@ -483,8 +498,9 @@ contains
         scene%closed_form_limits = .false.
         scene%max_collisions = 2000000
         call simulate(scene, slow)
-        call check(error, fast%status == status_collapsed .and. fast%n < 5000 .and. &
-            fast%limits%closed_form >= 1, "light between heavy: no closed-form limit within 5000")
+        call check(error, fast%status == status_collapsed .and. fast%n < 300000 .and. &
+            fast%limits%closed_form >= 1 .and. fast%answer == answer_certified, &
+            "light between heavy: no certified limit within 300,000")
         if (allocated(error)) return
         call check(error, slow%status == status_collapsed .and. slow%n > 100000, &
             "light between heavy: the fallback alone no longer needs a long run")
@@ -698,11 +714,12 @@ contains
 
     !> Survey row 611 (p = 8, masses from 0.0041 to 84): a touching block
     !> struck again and again while the collisions around it accumulate,
-    !> each strike's cascade proven to merge by a try. The engine waits less
-    !> after a try that merged than after one that did not, so the 302
-    !> limits (all in closed form) come within 8000 collisions, where
-    !> 17,552 were needed with the same wait after both; every sphere ends
-    !> at m_1 v_0/sum(m).
+    !> each strike's cascade proven to merge by a try; the light spheres
+    !> beside it shuttle on in gaps below tol (not contacts) until their rates
+    !> are below tol too and the fallback takes them, at tolerance. The
+    !> engine waits less after a try that merged than after one that did
+    !> not: the row ends within 20,000 collisions (12,255, with 1,841 limits
+    !> proven); every sphere ends at m_1 v_0/sum(m).
     subroutine test_struck_again(error)
         type(error_t), allocatable, intent(out) :: error
         type(scene_t) :: scene
@@ -717,17 +734,17 @@ contains
             gaps=[0.0_qp, 0.6683402056805789470672607421875_qp, 1.6220443584024906158447265625_qp, &
             0.5771956783719360828399658203125_qp, 0.154092319309711456298828125_qp, &
             1.5614892640151083469390869140625_qp, 1.15029406361281871795654296875_qp])
-        call check_row_merges(scene, 8000, .true., "block struck again and again", error)
+        call check_row_merges(scene, 20000, .false., "block struck again and again", error)
     end subroutine test_struck_again
 
     !> Survey row 849 (p = 11, masses from 0.0066 to 514): a try of spheres
     !> 1..5 runs out of work at collision 299, and spheres 6..11, struck,
     !> start a cascade that a try proves to merge. A block's wait after its
     !> try does not hold back the try of another block: the row ends within
-    !> 2000 collisions (with one wait for every block, the try of 6..11 came
-    !> only after the 65,536 collisions of that wait), every limit in closed
-    !> form, momentum kept and no pair closing, by the scan and by the
-    !> calendar.
+    !> 20,000 collisions (11,696: its light spheres then shuttle in gaps below
+    !> tol until the fallback takes them; with one wait for every block, the
+    !> try of 6..11 came only after the 65,536 collisions of that wait),
+    !> momentum kept and no pair closing, by the scan and by the calendar.
     subroutine test_other_block(error)
         type(error_t), allocatable, intent(out) :: error
         type(scene_t) :: scene
@@ -744,7 +761,7 @@ contains
             1.153760363347828388214111328125_qp, 1.2885074033401906490325927734375_qp, 0.0_qp, &
             0.8046814664267003536224365234375_qp, 0.1088909055106341838836669921875_qp, 0.0_qp, &
             0.767450160346925258636474609375_qp, 1.8842644342221319675445556640625_qp])
-        call check_row_merges(scene, 2000, .true., "other block", error, one_block=.false.)
+        call check_row_merges(scene, 20000, .false., "other block", error, one_block=.false.)
     end subroutine test_other_block
 
     !> A row of heavy spheres (164.6) with light ones (0.0047) between them:
@@ -777,11 +794,13 @@ contains
     !> spheres 6..11, then 179 of 6..14). Each strike finds the block at rest
     !> within itself, its rates all 0 but the struck contact's, so its
     !> cascade is the one of the strike before up to its scale, and the first
-    !> try's proof of its merge stands for every later strike: the row ends
-    !> within 3000 collisions (1237, with 415 limits), every limit in closed
-    !> form, momentum kept and no pair closing, by the scan and by the
-    !> calendar. Stepping each strike's cascade until a try came due, and that
-    !> try waiting 1/64 of the last one's work, it was still going at 10^6.
+    !> try's proof of its merge stands for every later strike. The light
+    !> sphere beyond the block shuttles in gaps below tol (not contacts)
+    !> until the fallback takes it, at tolerance: the row ends within 300,000
+    !> collisions (239,140, with 119,373 limits proven), momentum kept and
+    !> no pair closing, by the scan and by the calendar. Stepping each
+    !> strike's cascade until a try came due, and that try waiting 1/64 of
+    !> the last one's work, it was still going at 10^6.
     subroutine test_struck_at_rest(error)
         type(error_t), allocatable, intent(out) :: error
         type(scene_t) :: scene
@@ -802,8 +821,8 @@ contains
             1.9136783699505031108856201171875_qp, 0.860124523751437664031982421875_qp, &
             0.5570084783248603343963623046875_qp, 0.921351038850843906402587890625_qp, &
             0.16385924816131591796875_qp, 0.605546773411333560943603515625_qp])
-        call check_row_merges(scene, 3000, .true., "block struck at rest within itself", error, &
-            one_block=.false.)
+        call check_row_merges(scene, 300000, .false., "block struck at rest within itself", &
+            error, one_block=.false.)
     end subroutine test_struck_at_rest
 
     !> Run `scene` by the scan and by the calendar: it must end collapsed

@@ -207,6 +207,7 @@ contains
         run%limits%closed_form = low%limits%closed_form
         run%limits%exact = low%limits%exact
         run%limits%certified = low%limits%certified
+        run%limits%tolerance = low%limits%tolerance
         run%limits%bounded = low%limits%bounded
         run%limits%first = low%limits%first
         run%limits%last = low%limits%last
@@ -214,6 +215,7 @@ contains
         run%answer = low%answer
         run%v_bound = real(low%v_bound, qp)
         if (allocated(low%v_bounds)) run%v_bounds = real(low%v_bounds, qp)
+        if (allocated(low%v_rounding)) run%v_rounding = real(low%v_rounding, qp)
         if (allocated(low%active)) run%active = low%active
         run%y = real(low%y, qp)
         run%dy = real(low%dy, qp)
