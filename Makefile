@@ -168,13 +168,13 @@ check-docs: prereqs ## check README.md and docs/: quoted numbers, links, command
 	PATH="$(abspath $(DOCS_PREFIX))/bin:$$PATH" python3 tools/check-docs
 
 # the engine's and the CLI's tests (root package), then the study's (study/),
-# then the tools' (tools/test-tools: check-docs and make install); the last
-# line adds up the three runs' `N passed, N failed` (a run that reports no
-# such line, e.g. because it did not build, counts as one failure)
-# (TEST_ARGS=long gives the deep versions: test-long)
+# then the tools' that build nothing (tools/test-tools --without-install:
+# check-docs fails on a changed number, link or output; make test-tools adds
+# make install, CI runs it); the last line adds up the three runs' `N passed,
+# N failed` (a run that reports no such line, e.g. because it did not build,
+# counts as one failure) (TEST_ARGS=long gives the deep versions: test-long)
 # The two packages' suites run side by side (the study's printed after the
-# engine's), one per core; the tools' after both (make install builds with
-# fpm in the root package, which fpm test is using).
+# engine's), one per core.
 test: prereqs check-layers $(INC_STAMP) ## run both packages' tests; last line: N passed, N failed
 	@mkdir -p build
 	@set -o pipefail; status=0; \
@@ -183,12 +183,13 @@ test: prereqs check-layers $(INC_STAMP) ## run both packages' tests; last line: 
 	$(FPM) test $(TEST_FLAGS) $(if $(TEST_ARGS),-- $(TEST_ARGS)) 2>&1 \
 		| tee build/test-engine.log || status=1; \
 	wait $$study || status=1; cat build/test-study.log; \
-	python3 tools/test-tools > build/test-tools.log 2>&1 || status=1; cat build/test-tools.log; \
+	python3 tools/test-tools --without-install > build/test-tools.log 2>&1 || status=1; \
+	cat build/test-tools.log; \
 	awk '/^[0-9]+ passed, [0-9]+ failed$$/ { p += $$1; f += $$3; n++ } \
 		END { f += 3 - n; printf "%d passed, %d failed\n", p, f; exit f > 0 }' \
 		build/test-engine.log build/test-study.log build/test-tools.log && exit $$status
 
-test-tools: prereqs ## the tools' own tests: check-docs fails on a changed number or link, make install
+test-tools: prereqs ## the tools' own tests: check-docs fails on a changed number or link; make install
 	@python3 tools/test-tools
 
 readme-commands: prereqs ## run every command the README shows and check what it prints
