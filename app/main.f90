@@ -10,7 +10,8 @@ program sphere_row_main
     use sphere_row_error, only: error_t, fatal_error
     use sphere_row_format, only: short_text, real_text, int_text, number_text_length
     use sphere_row_read, only: printable
-    use sphere_row_system, only: text_out_t, stderr_is_terminal, system_error_text
+    use sphere_row_system, only: text_out_t, stderr_is_terminal, system_error_text, path_kind, &
+        path_missing, path_regular
     use sphere_row_watch, only: watch_t, event_header
     use sphere_row_lines, only: output_help
     implicit none
@@ -113,12 +114,21 @@ contains
         type(error_t), allocatable, intent(out) :: error
         real :: megabytes
         character(len=16) :: text
-        integer :: errno
+        integer :: errno, kind
         watch%events = events
         watch%progress = stderr_is_terminal()
         watch%out => out
         if (.not. events) return
         if (events_to_file) then
+            ! a directory or a device of that name would be found only when
+            ! the table is renamed, after the run: refused now
+            kind = path_kind(events_word, errno)
+            if (kind /= path_missing .and. kind /= path_regular) then
+                call fatal_error(error, "events = "//printable(events_word)//": not a regular " &
+                    //"file (a directory, a device, a FIFO or a socket); allowed yes, no or " &
+                    //"a file name ending in .tsv")
+                return
+            end if
             call table%create(events_word, errno)
             if (errno /= 0) then
                 call fatal_error(error, "events = "//printable(events_word)//": cannot be " &

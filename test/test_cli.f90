@@ -202,6 +202,12 @@ contains
             //"status "//itoa_local(status)//": "//err)
         call check(error, .not. exists(table_file) .and. .not. exists(table_file//".tmp"), &
             "a failed write left a table file")
+        call execute_command_line("mkdir -p build/test_cli_dir.tsv")
+        call run_cli("events=build/test_cli_dir.tsv", status, out, err)
+        call check(error, status == 2 .and. count_lines(err) == 1 .and. len(out) == 0 .and. &
+            index(err, "sphere-row: events = build/test_cli_dir.tsv: not a regular file") == 1, &
+            "a directory: "//err)
+        call check(error, .not. exists("build/test_cli_dir.tsv.tmp"), "a directory: .tmp left")
         call run_cli("events=build/no_such_directory/x.tsv", status, out, err)
         call check(error, status == 2 .and. count_lines(err) == 1 .and. len(out) == 0 .and. &
             index(err, "sphere-row: events = build/no_such_directory/x.tsv: cannot be " &
