@@ -14,6 +14,7 @@
 #                        (PREFIX ?= ~/.local); make uninstall removes it
 #   make check-docs      every number README.md and docs/ quote from results/ against
 #                        its table, every relative link, every command they show
+#   make test-tools      the tools' own tests (check-docs, make install)
 #   make examples        build and run every example program (example/)
 #   make bench           speed: the cost study (cost.tsv, the engine against the tight
 #                        loop in cost_vs_loop.tsv, their figures) and bench.tsv
