@@ -10,6 +10,11 @@
 #   make study           every task's tables, figures and results/summary.md
 #   make plot            ARGS="p=30 e=0.6": the space-time diagram of any scene, plot.png
 #                        and plot.svg (PLOT=name for another name)
+#   make install         the sphere-row CLI, built in release, into $(PREFIX)/bin
+#                        (PREFIX ?= ~/.local); make uninstall removes it
+#   make check-docs      every number README.md and docs/ quote from results/ against
+#                        its table, every relative link, every command they show
+#   make test-tools      the tools' own tests (check-docs, make install)
 #   make examples        build and run every example program (example/)
 #   make bench           speed: the cost study (cost.tsv, the engine against the tight
 #                        loop in cost_vs_loop.tsv, their figures) and bench.tsv
@@ -126,7 +131,7 @@ PNG := $(FIGURES:%=$(RESULTS)/%.png) $(RESULTS)/methods_work_precision.png \
 SVG := $(FIGURES:%=$(RESULTS)/%.svg) $(RESULTS)/methods_work_precision.svg \
        $(RESULTS)/methods_stability.svg $(SPACETIME:%=$(RESULTS)/%.svg)
 
-.PHONY: all help prereqs test test-long test-times mutants differential readme-commands test-mpi check-layers study tables \
+.PHONY: all help prereqs install uninstall check-docs test-tools test test-long test-times mutants differential readme-commands test-mpi check-layers study tables \
         figures bench callgrind check-results docs lint clean fuzz plot examples ecrit-full
 
 all: study
@@ -137,10 +142,38 @@ help: ## list the targets
 prereqs: ## install missing gfortran, GSL, gnuplot, fpm (Debian, root) or say how
 	@bash .ci/prereqs
 
-# the engine's and the CLI's tests (root package), then the study's (study/);
-# the last line adds up both runs' `N passed, N failed` (a run that reports
-# no such line, e.g. because it did not build, counts as one failure)
-# (TEST_ARGS=long gives the deep versions: test-long)
+# the command-line program, built with the release profile (the debug build
+# fpm run makes by default is about ten times slower), into $(PREFIX)/bin; a
+# user-writable place by default, so no root is needed
+PREFIX ?= $(HOME)/.local
+install: prereqs ## the sphere-row CLI into $(PREFIX)/bin (default ~/.local; PREFIX=/path for another)
+	$(FPM) install --profile release $(KIND_FLAGS) --prefix $(abspath $(PREFIX))
+	@echo "install: $(abspath $(PREFIX))/bin/sphere-row"; \
+	case ":$$PATH:" in *":$(abspath $(PREFIX))/bin:"*) ;; \
+	*) echo "install: $(abspath $(PREFIX))/bin is not on PATH; add it, e.g. in ~/.profile:"; \
+	   echo "  export PATH=\"$(abspath $(PREFIX))/bin:\$$PATH\"";; esac
+
+uninstall: ## remove sphere-row from $(PREFIX)/bin
+	rm -f $(abspath $(PREFIX))/bin/sphere-row
+
+# README.md and docs/: every number quoted from a table of results/ against
+# that table at its printed digits, every relative link, and every command
+# they show run (sphere-row as installed into build/docs-prefix, on PATH),
+# with the output they show; docs/cli.md's table of output lines against
+# sphere-row --help (tools/check-docs)
+DOCS_PREFIX := build/docs-prefix
+check-docs: prereqs ## check README.md and docs/: quoted numbers, links, commands
+	@mkdir -p build
+	@$(MAKE) --no-print-directory install PREFIX=$(DOCS_PREFIX) > build/docs-install.log 2>&1 \
+		|| { cat build/docs-install.log; exit 1; }
+	PATH="$(abspath $(DOCS_PREFIX))/bin:$$PATH" python3 tools/check-docs
+
+# the engine's and the CLI's tests (root package), then the study's (study/),
+# then the tools' that build nothing (tools/test-tools --without-install:
+# check-docs fails on a changed number, link or output; make test-tools adds
+# make install, CI runs it); the last line adds up the three runs' `N passed,
+# N failed` (a run that reports no such line, e.g. because it did not build,
+# counts as one failure) (TEST_ARGS=long gives the deep versions: test-long)
 # The two packages' suites run side by side (the study's printed after the
 # engine's), one per core.
 test: prereqs check-layers $(INC_STAMP) ## run both packages' tests; last line: N passed, N failed
@@ -151,12 +184,20 @@ test: prereqs check-layers $(INC_STAMP) ## run both packages' tests; last line: 
 	$(FPM) test $(TEST_FLAGS) $(if $(TEST_ARGS),-- $(TEST_ARGS)) 2>&1 \
 		| tee build/test-engine.log || status=1; \
 	wait $$study || status=1; cat build/test-study.log; \
+	python3 tools/test-tools --without-install > build/test-tools.log 2>&1 || status=1; \
+	cat build/test-tools.log; \
 	awk '/^[0-9]+ passed, [0-9]+ failed$$/ { p += $$1; f += $$3; n++ } \
-		END { f += 2 - n; printf "%d passed, %d failed\n", p, f; exit f > 0 }' \
-		build/test-engine.log build/test-study.log && exit $$status
+		END { f += 3 - n; printf "%d passed, %d failed\n", p, f; exit f > 0 }' \
+		build/test-engine.log build/test-study.log build/test-tools.log && exit $$status
+
+test-tools: prereqs ## the tools' own tests: check-docs fails on a changed number or link; make install
+	@python3 tools/test-tools
 
 readme-commands: prereqs ## run every command the README shows and check what it prints
-	python3 tools/readme-commands
+	@mkdir -p build
+	@$(MAKE) --no-print-directory install PREFIX=$(DOCS_PREFIX) > build/docs-install.log 2>&1 \
+		|| { cat build/docs-install.log; exit 1; }
+	PATH="$(abspath $(DOCS_PREFIX))/bin:$$PATH" python3 tools/check-docs --only commands README.md
 
 differential: prereqs ## the same random rows by REV (default HEAD) and the working tree
 	bash tools/differential $(or $(REV),HEAD) $(ARGS)
@@ -169,7 +210,7 @@ test-long: ## the tests in their deep versions (more random cases, longer runs; 
 
 # every test's line ends in its wall time: `ok   suite/name (1.23 s)`
 test-times: test ## make test, then build/test-times.tsv: each test's seconds, slowest first
-	@grep -h '^\(ok  \|FAIL\) ' build/test-engine.log build/test-study.log \
+	@grep -h '^\(ok  \|FAIL\) ' build/test-engine.log build/test-study.log build/test-tools.log \
 		| sed -E 's/^(ok  |FAIL) +([^ ]+) \(([0-9.]+) s\).*/\3\t\2/' | sort -rn \
 		| { printf 'seconds\ttest\n'; cat; } > build/test-times.tsv
 	@head -n 6 build/test-times.tsv

@@ -10,8 +10,10 @@ program sphere_row_main
     use sphere_row_error, only: error_t, fatal_error
     use sphere_row_format, only: short_text, real_text, int_text, number_text_length
     use sphere_row_read, only: printable
-    use sphere_row_system, only: text_out_t, stderr_is_terminal
+    use sphere_row_system, only: text_out_t, stderr_is_terminal, system_error_text, path_kind, &
+        path_missing, path_regular
     use sphere_row_watch, only: watch_t, event_header
+    use sphere_row_lines, only: output_help
     implicit none
     type(cli_t) :: cli
     type(scene_t) :: scene
@@ -19,9 +21,12 @@ program sphere_row_main
     type(watch_t) :: watch
     type(error_t), allocatable :: error
     type(auto_t) :: auto
-    type(text_out_t), target :: out
-    logical :: events
-    character(len=:), allocatable :: precision_word
+    !> The answer (standard output) and, with events=FILE, the event table's
+    !> file; with events=yes the table goes to `out` before the answer.
+    type(text_out_t), target :: out, table
+    !> The event table is written (events=yes or a file), and to a file.
+    logical :: events, events_to_file
+    character(len=:), allocatable :: precision_word, events_word
     !> Significant digits of the kind that answered: real(16)'s (str's), or
     !> real(8)'s where it answered (precision=dp, or auto in real(8)); no
     !> number is written with more digits than its kind holds.
@@ -31,35 +36,56 @@ program sphere_row_main
     call read_command_line(cli)
     call scene_from_cli(cli, scene, error)
     if (allocated(error)) call fail(cli%name, error)
-    events = cli%get_flag("events")
+    events_word = cli%get_word("events")
+    events = events_word /= "no"
+    events_to_file = events .and. events_word /= "yes"
     call choose_precision(error)
     if (allocated(error)) call fail(cli%name, error)
-    call start_watch()
+    call start_watch(error)
+    if (allocated(error)) call fail(cli%name, error)
     call run_scene(scene, run, watch)
     call check_run(error)
-    if (allocated(error)) call fail(cli%name, error)
+    if (allocated(error)) call stop_on(error)
     call write_run()
+    ! the table's file complete before the answer is let out, and given its
+    ! name only once both are written: a failure anywhere leaves no file
+    if (events_to_file) call table%finish(error)
+    if (allocated(error)) call stop_on(error)
     call out%finish(error)
+    if (allocated(error)) call stop_on(error)
+    if (events_to_file) call table%commit(error)
     if (allocated(error)) call fail(cli%name, error)
 
 contains
 
-    !> The keys of sphere-row: the scene keys, `events` and `precision`.
+    !> The keys of sphere-row: the scene keys, `events` and `precision`; and
+    !> what it writes, after the keys in `--help`.
     subroutine define_keys()
         character(len=*), parameter :: nl = new_line("a")
         cli%name = "sphere-row"
         cli%synopsis = "[FILE] [key=value ...]"
         cli%about = &
             "Runs one row of spheres struck by sphere 1 (ARGESIM Comparison 12) in"//nl// &
-            "real(16) and prints the number of collisions, the end time, the status"//nl// &
-            "(normal, quasi_plastic, max_collisions), the final velocities v1..vp,"//nl// &
-            "positions x1..xp and gaps y1..y(p-1). FILE - reads the scene from stdin."
+            "real(16) and prints the number of collisions, the end time, the status, how"//nl// &
+            "good the answer is, the final velocities v1..vp, positions x1..xp and gaps"//nl// &
+            "y1..y(p-1) (each line is described below). FILE - reads the scene from stdin."
         call add_scene_keys(cli)
-        call cli%add_flag("events", "no", "yes adds the event table (TSV with a header row)")
+        call cli%add_table("events", "no", "yes: the event table on stdout before the " &
+            //"answer; FILE.tsv: the table alone into that file, the answer on stdout " &
+            //"(its columns are described below)")
         call cli%add_choice("precision", "qp", [character(len=4) :: "qp", "dp", "auto"], &
             "qp: real(16); dp: real(8), for a scene within real(8)'s normal range; auto:" &
             //" real(8) where a rounding certificate holds, else real(16)")
+        cli%epilogue = output_help()
     end subroutine define_keys
+
+    !> A refusal or failure after the event table's file was created: the
+    !> file goes, then the message and the exit status.
+    subroutine stop_on(error)
+        type(error_t), intent(in) :: error
+        if (events_to_file) call table%discard()
+        call fail(cli%name, error)
+    end subroutine stop_on
 
     !> The precision asked for (qp, dp or auto; the registry checked the
     !> word); the event table only with qp; with dp, a scene real(8) carries,
@@ -68,8 +94,8 @@ contains
         type(error_t), allocatable, intent(out) :: error
         precision_word = cli%get_word("precision")
         if (events .and. precision_word /= "qp") then
-            call fatal_error(error, "events = yes with precision = "//precision_word &
-                //": allowed only with precision = qp")
+            call fatal_error(error, "events = "//printable(events_word)//" with precision = " &
+                //precision_word//": allowed only with precision = qp")
             return
         end if
         if (precision_word /= "dp") return
@@ -80,23 +106,46 @@ contains
     end subroutine choose_precision
 
     !> The watch of the run: the event table written row by row as the run
-    !> goes, its header first (and, for a long row, a line on stderr that says
-    !> what it costs: every row holds 2p + 6 numbers); progress lines on
-    !> stderr when it is a terminal.
-    subroutine start_watch()
+    !> goes, its header first, onto stdout or into its file (created here:
+    !> a file that cannot be made is refused before the run); for a long row
+    !> a line on stderr that says what it costs (every row holds 2p + 6
+    !> numbers); progress lines on stderr when it is a terminal.
+    subroutine start_watch(error)
+        type(error_t), allocatable, intent(out) :: error
         real :: megabytes
         character(len=16) :: text
+        integer :: errno, kind
         watch%events = events
         watch%progress = stderr_is_terminal()
         watch%out => out
         if (.not. events) return
-        call out%put(event_header(scene%p))
+        if (events_to_file) then
+            ! a directory or a device of that name would be found only when
+            ! the table is renamed, after the run: refused now
+            kind = path_kind(events_word, errno)
+            if (kind /= path_missing .and. kind /= path_regular) then
+                call fatal_error(error, "events = "//printable(events_word)//": not a regular " &
+                    //"file (a directory, a device, a FIFO or a socket); allowed yes, no or " &
+                    //"a file name ending in .tsv")
+                return
+            end if
+            call table%create(events_word, errno)
+            if (errno /= 0) then
+                call fatal_error(error, "events = "//printable(events_word)//": cannot be " &
+                    //"written ("//system_error_text(errno)//"); allowed yes, no or a file " &
+                    //"name ending in .tsv in a directory that exists and may be written")
+                return
+            end if
+            watch%out => table
+        end if
+        call watch%out%put(event_header(scene%p))
         megabytes = real(2*scene%p + 6)*41.0/1.0e6
         if (megabytes < 1.0) return
         write (text, "(f0.1)") megabytes
-        write (error_unit, "(a)") "sphere-row: events = yes: every event row holds " &
-            //itoa(2*scene%p + 6)//" numbers, about "//trim(text)//" MB; a row of " &
-            //itoa(scene%p)//" spheres has at least "//itoa(scene%p - 1)//" collisions"
+        write (error_unit, "(a)") "sphere-row: events = "//printable(events_word)//": every " &
+            //"event row holds "//itoa(2*scene%p + 6)//" numbers, about "//trim(text) &
+            //" MB; a row of "//itoa(scene%p)//" spheres has at least "//itoa(scene%p - 1) &
+            //" collisions"
     end subroutine start_watch
 
     !> Run `sc` in the precision asked for.
@@ -148,8 +197,8 @@ contains
                 //"; allowed a shorter row")
             return
         end if
-        if (watch%overflow > 0) call fatal_error(error, "events = yes: event " &
-            //itoa(watch%overflow)//" of this scene overflows "//kind_name &
+        if (watch%overflow > 0) call fatal_error(error, "events = "//printable(events_word) &
+            //": event "//itoa(watch%overflow)//" of this scene overflows "//kind_name &
             //"; allowed events = no")
     end subroutine check_run
 

@@ -4,7 +4,7 @@
 module sphere_row_watch
     use, intrinsic :: iso_fortran_env, only: error_unit, int64
     use sphere_row, only: qp, run_t, observer_t, state_now, str, itoa, event_collision, &
-        event_collapse, real_text, number_text_length
+        event_collapse, real_text, int_text, number_text_length
     use sphere_row_system, only: text_out_t
     implicit none
     private
@@ -37,20 +37,36 @@ module sphere_row_watch
 contains
 
     !> The header of the event table for p spheres (L: the unit of d and a;
-    !> V: the unit of v0).
+    !> V: the unit of v0; the columns as sphere_row_lines describes them),
+    !> assembled in one buffer of its full length: appending column by
+    !> column would copy the header once per column, time quadratic in p.
     function event_header(p) result(line)
         integer, intent(in) :: p
         character(len=:), allocatable :: line
-        character(len=*), parameter :: tab = achar(9)
-        integer :: k
-        line = "event"//tab//"kind"//tab//"first"//tab//"last"//tab//"t[L/V]"//tab//"w[V]" &
-            //tab//"x1[L]"//tab//"dx1[V]"
+        character(len=*), parameter :: tab = achar(9), fixed = "event"//tab//"kind"//tab &
+            //"first"//tab//"last"//tab//"t[L/V]"//tab//"w[V]"//tab//"x1[L]"//tab//"dx1[V]"
+        character(len=number_text_length) :: digits
+        character(len=:), allocatable :: buffer
+        integer :: k, n, at
+        ! every column name is its prefix, at most len(itoa(p)) digits and its unit
+        allocate (character(len=len(fixed) + 2*max(p - 1, 0)*(len(itoa(p)) + 6)) :: buffer)
+        buffer(:len(fixed)) = fixed
+        at = len(fixed)
         do k = 1, p - 1
-            line = line//tab//"y"//itoa(k)//"[L]"
+            call int_text(int(k, int64), digits, n)
+            call put(tab//"y"//digits(:n)//"[L]")
         end do
         do k = 1, p - 1
-            line = line//tab//"dy"//itoa(k)//"[V]"
+            call int_text(int(k, int64), digits, n)
+            call put(tab//"dy"//digits(:n)//"[V]")
         end do
+        line = buffer(:at)
+    contains
+        subroutine put(name)
+            character(len=*), intent(in) :: name
+            buffer(at + 1:at + len(name)) = name
+            at = at + len(name)
+        end subroutine put
     end function event_header
 
     !> An event: its row of the table, and now and then a progress line.

@@ -75,15 +75,21 @@ if (drawn <= 12 && d > 0) {
         .'(column("x1[L]") - column("x0[L]")):(column("t1[L/V]") - column("t0[L/V]")) ' \
         .'with vectors nohead lw 0.8 lc rgb "#b0b0b0" notitle, '
 }
+# the world lines carry no title of their own: a line coloured by the palette
+# would show a sample in whatever colour the palette gives it (the red of its
+# top end); the key's sample below is drawn in the palette's middle colour
 draw = draw.'lines using (column("x0[L]")):(column("t0[L/V]")):' \
     .'(column("x1[L]") - column("x0[L]")):(column("t1[L/V]") - column("t0[L/V]")):' \
-    .'(shade(column("v[V]"))) with vectors nohead lw line_width lc palette ' \
+    .'(shade(column("v[V]"))) with vectors nohead lw line_width lc palette notitle, ' \
+    .'NaN with lines lw 2 lc rgb "#2a9d8f" ' \
     .'title "world line x_i(t) of a sphere (colour: its speed)", ' \
     .'marks using (column("x[L]")):(column("t[L/V]")) with points pt 7 ps mark_size ' \
     .'lc rgb "black" title "collision (point of contact)"'
-# many limits: thin bars, so that the world lines show through
-bar_width = (n_limits > 30) ? 0.7 : 2.5
-bar_colour = (n_limits > 30) ? '#a0d62728' : '#60d62728'
+# collapse bars in a colour the palette does not use, nearly opaque, as wide
+# as their number leaves room for: 3 px up to 30 limits, 2 px up to 100, then
+# 1 px (a long row's limits come a few pixels apart), never thinner
+bar_width = (n_limits > 100) ? 1 : (n_limits > 30 ? 2 : 3)
+bar_colour = '#207b2cbf'
 if (n_limits > 0) {
     draw = draw.', limits using (column("x_left[L]")):(column("t[L/V]")):' \
         .'(column("x_right[L]") - column("x_left[L]")):(0) with vectors nohead lw bar_width ' \
@@ -95,7 +101,7 @@ if (drawn <= 12 && d > 0) {
 if (n_limits > 0 && n_limits <= 12) {
     draw = draw.', limits using (column("x_left[L]")):(column("t[L/V]")):' \
         .'(sprintf("%d-%d ", column("first"), column("last"))) with labels right ' \
-        .'offset -0.5,0 tc rgb "#d62728" notitle'
+        .'offset -0.5,0 tc rgb "#7b2cbf" notitle'
 }
 
 set terminal pngcairo size 1200,800 font ',11'

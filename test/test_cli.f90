@@ -1,11 +1,14 @@
 !> Tests of the sphere-row command line, run as a separate process.
 module test_cli
+    use, intrinsic :: iso_fortran_env, only: int64
     use testsuite, only: error_t, unittest_t, new_unittest, check, read_text, count_lines
     implicit none
     private
     public :: collect_cli, program_path
 
     character(len=*), parameter :: out_file = "build/test_cli.out", err_file = "build/test_cli.err"
+    character(len=*), parameter :: table_file = "build/test_cli_events.tsv"
+    character(len=*), parameter :: tab = achar(9), nl = new_line("a")
 
 contains
 
@@ -17,7 +20,11 @@ contains
             new_unittest("definition_scene_output", test_good_output), &
             new_unittest("namelist_file", test_namelist), &
             new_unittest("event_table", test_events), &
-            new_unittest("help", test_help) &
+            new_unittest("event_table_file", test_events_file), &
+            new_unittest("event_table_file_never_partial", test_events_file_failures), &
+            new_unittest("event_header_linear_in_p", test_events_long_row), &
+            new_unittest("help", test_help), &
+            new_unittest("help_describes_output", test_help_output) &
             ]
     end function collect_cli
 
@@ -133,6 +140,134 @@ contains
             "events=yes: wrong number of lines")
     end subroutine test_events
 
+    !> `events=FILE.tsv` writes the event table alone into the file, a TSV
+    !> table with one header row naming each column and its unit, one row
+    !> per event with as many fields; the answer goes to stdout, without
+    !> the table.
+    subroutine test_events_file(error)
+        type(error_t), allocatable, intent(out) :: error
+        integer :: status, rows, i, start, finish
+        character(len=:), allocatable :: out, err, table, header, line
+        call execute_command_line("rm -f "//table_file)
+        call run_cli("p=5 e=0.3 events="//table_file, status, out, err)
+        call check(error, status == 0 .and. len(err) == 0, "events=FILE: exit status "// &
+            itoa_local(status)//": "//err)
+        if (allocated(error)) return
+        call check(error, index(out, "event"//tab) == 0 .and. index(out, tab) == 0 .and. &
+            index(out, "collisions ") == 1, "events=FILE: the table on stdout: "//out)
+        table = read_text(table_file)
+        header = table(:index(table, nl) - 1)
+        call check(error, header == "event"//tab//"kind"//tab//"first"//tab//"last"//tab// &
+            "t[L/V]"//tab//"w[V]"//tab//"x1[L]"//tab//"dx1[V]"//tab//"y1[L]"//tab//"y2[L]" &
+            //tab//"y3[L]"//tab//"y4[L]"//tab//"dy1[V]"//tab//"dy2[V]"//tab//"dy3[V]"//tab// &
+            "dy4[V]", "events=FILE: header "//header)
+        ! every row: as many fields as the header, the start first
+        rows = 0
+        start = len(header) + 2
+        do while (start <= len(table))
+            finish = start + index(table(start:), nl) - 2
+            line = table(start:finish)
+            call check(error, count_tabs(line) == count_tabs(header), "events=FILE: a row " &
+                //"of another width: "//line)
+            if (allocated(error)) return
+            if (rows == 0) call check(error, index(line, "0"//tab//"start"//tab) == 1, &
+                "events=FILE: first row "//line)
+            rows = rows + 1
+            start = finish + 2
+        end do
+        ! the start, each collision and each collapse limit
+        i = index(out, "collisions ") + len("collisions ")
+        call check(error, rows == 1 + read_int_at(out, i) + count_word(out, "collapses"), &
+            "events=FILE: "//itoa_local(rows)//" rows for "//out(:index(out, nl)))
+        call check(error, table(len(table):) == nl, "events=FILE: last line unended")
+    end subroutine test_events_file
+
+    !> A run refused after it ran (its times overflow), an answer that cannot
+    !> be written, or a file that cannot be made: no table file is left, nor
+    !> its temporary name.
+    subroutine test_events_file_failures(error)
+        type(error_t), allocatable, intent(out) :: error
+        integer :: status
+        character(len=:), allocatable :: out, err
+        call execute_command_line("rm -f "//table_file//" "//table_file//".tmp")
+        call run_cli("v0=1e-4931 events="//table_file, status, out, err)
+        call check(error, status == 2 .and. count_lines(err) == 1 .and. len(out) == 0, &
+            "refused run: status "//itoa_local(status)//": "//err)
+        call check(error, .not. exists(table_file) .and. .not. exists(table_file//".tmp"), &
+            "refused run left a table file")
+        call execute_command_line(program_path_cached()//" e=0.2 events="//table_file &
+            //" > /dev/full 2> "//err_file, exitstat=status)
+        err = read_text(err_file)
+        call check(error, status == 1 .and. count_lines(err) == 1, "stdout on /dev/full: " &
+            //"status "//itoa_local(status)//": "//err)
+        call check(error, .not. exists(table_file) .and. .not. exists(table_file//".tmp"), &
+            "a failed write left a table file")
+        call execute_command_line("mkdir -p build/test_cli_dir.tsv")
+        call run_cli("events=build/test_cli_dir.tsv", status, out, err)
+        call check(error, status == 2 .and. count_lines(err) == 1 .and. len(out) == 0 .and. &
+            index(err, "sphere-row: events = build/test_cli_dir.tsv: not a regular file") == 1, &
+            "a directory: "//err)
+        call check(error, .not. exists("build/test_cli_dir.tsv.tmp"), "a directory: .tmp left")
+        call run_cli("events=build/no_such_directory/x.tsv", status, out, err)
+        call check(error, status == 2 .and. count_lines(err) == 1 .and. len(out) == 0 .and. &
+            index(err, "sphere-row: events = build/no_such_directory/x.tsv: cannot be " &
+            //"written (No such file or directory); allowed") == 1, "no directory: "//err)
+    end subroutine test_events_file_failures
+
+    !> The event table's header of a long row comes at once: p = 50,000 with
+    !> its first collision (a header of 10^5 columns and three rows of 10^5
+    !> numbers) in well under the 40 s a header assembled column by column
+    !> took at this length.
+    subroutine test_events_long_row(error)
+        type(error_t), allocatable, intent(out) :: error
+        integer :: status
+        integer(int64) :: start, finish, rate
+        real :: seconds
+        character(len=:), allocatable :: err
+        call system_clock(start, rate)
+        call execute_command_line(program_path_cached()//" p=50000 e=1 max_collisions=1 " &
+            //"events="//table_file//" > /dev/null 2> "//err_file, exitstat=status)
+        call system_clock(finish)
+        seconds = real(finish - start)/real(rate)
+        err = read_text(err_file)
+        call check(error, status == 0, "p=50000 events: status "//itoa_local(status)//": "//err)
+        call check(error, seconds < 10.0, "p=50000 events: header and 3 rows took more than " &
+            //"10 s")
+        call execute_command_line("rm -f "//table_file)
+    end subroutine test_events_long_row
+
+    !> `--help` describes every line of the answer and every column of the
+    !> event table with its unit, within 100 columns a line.
+    subroutine test_help_output(error)
+        type(error_t), allocatable, intent(out) :: error
+        character(len=*), parameter :: names(*) = [character(len=32) :: "collisions", &
+            "t_end", "status", "precision", "certified", "not_dp", "answer", "v_bound", &
+            "collapses", "closed_form_limits", "limits_exact", "limits_certified", &
+            "limits_bounded", "limits_tolerance", "collapse", "collapse_spheres", "collapse_t", &
+            "separation_scale", "separation_not_excluded_below", "active", "v<i>", "x<i>", &
+            "y<i>", "event", "kind", "first", "last", "t[L/V]", "w[V]", "x1[L]", "dx1[V]", &
+            "y<i>[L]", "dy<i>[V]"]
+        integer :: status, i, start, finish
+        character(len=:), allocatable :: out, err
+        call run_cli("--help", status, out, err)
+        call check(error, status == 0, "--help: exit status")
+        do i = 1, size(names)
+            call check(error, index(out, nl//"  "//trim(names(i))//" ") > 0 .or. &
+                index(out, nl//"  "//trim(names(i))//nl) > 0, "--help does " &
+                //"not describe the output line or column "//trim(names(i)))
+        end do
+        call check(error, index(out, "Units: L is the unit") > 0, "--help: units")
+        start = 1
+        do while (start <= len(out))
+            finish = start + index(out(start:), nl) - 2
+            if (finish < start - 1) finish = len(out)
+            call check(error, finish - start + 1 <= 100, "--help: a line of " &
+                //itoa_local(finish - start + 1)//" columns: "//out(start:finish))
+            if (allocated(error)) return
+            start = finish + 2
+        end do
+    end subroutine test_help_output
+
     !> `--help` lists every key and exits 0.
     subroutine test_help(error)
         type(error_t), allocatable, intent(out) :: error
@@ -145,5 +280,53 @@ contains
         call check(error, index(out, "precision=qp") > 0 .and. &
             index(out, "allowed qp, dp or auto") > 0, "--help: the words of precision")
     end subroutine test_help
+
+    function program_path_cached() result(path)
+        character(len=:), allocatable :: path
+        character(len=:), allocatable, save :: saved
+        if (.not. allocated(saved)) saved = program_path("sphere-row")
+        path = saved
+    end function program_path_cached
+
+    logical function exists(path)
+        character(len=*), intent(in) :: path
+        inquire (file=path, exist=exists)
+    end function exists
+
+    pure integer function count_tabs(line)
+        character(len=*), intent(in) :: line
+        integer :: i
+        count_tabs = 0
+        do i = 1, len(line)
+            if (line(i:i) == tab) count_tabs = count_tabs + 1
+        end do
+    end function count_tabs
+
+    !> The integer that starts at position `at` of `text` (0 if none).
+    integer function read_int_at(text, at)
+        character(len=*), intent(in) :: text
+        integer, intent(in) :: at
+        integer :: ios, finish
+        finish = at + verify(text(at:), "0123456789") - 2
+        read (text(at:finish), *, iostat=ios) read_int_at
+        if (ios /= 0) read_int_at = 0
+    end function read_int_at
+
+    !> The value of the answer line `word N`, 0 if there is none.
+    integer function count_word(text, word)
+        character(len=*), intent(in) :: text, word
+        integer :: at
+        count_word = 0
+        at = index(text, nl//word//" ")
+        if (at > 0) count_word = read_int_at(text, at + len(word) + 2)
+    end function count_word
+
+    pure function itoa_local(i) result(text)
+        integer, intent(in) :: i
+        character(len=:), allocatable :: text
+        character(len=16) :: buffer
+        write (buffer, "(i0)") i
+        text = trim(buffer)
+    end function itoa_local
 
 end module test_cli

@@ -207,6 +207,8 @@ contains
     !> Malformed inputs: unknown keys and stray arguments.
     function bad_unknown_keys() result(rows)
         type(bad_case_t), allocatable :: rows(:)
+        character(len=*), parameter :: table_rule = "allowed yes, no or the name of a file " &
+            //"ending in .tsv"
         rows = [ &
             bad("foo=1", 2, "foo = 1: unknown key; allowed keys: p, e,"), &
             bad("E=0.5", 2, "E = 0.5: unknown key"), &
@@ -215,9 +217,12 @@ contains
             bad("=0.5", 2, "argument '=0.5': no key before '='"), &
             bad("--foo", 2, "argument '--foo': allowed key=value"), &
             bad("\e", 2, "argument '': allowed key=value"), &
-            bad("events=maybe", 2, "events = maybe: allowed yes or no"), &
-            bad("events=Yes", 2, "events = Yes: allowed yes or no"), &
-            bad("events=", 2, "events = : allowed yes or no") &
+            bad("events=maybe", 2, "events = maybe: "//table_rule), &
+            bad("events=Yes", 2, "events = Yes: "//table_rule), &
+            bad("events=.tsv", 2, "events = .tsv: "//table_rule), &
+            bad("events=out.TSV", 2, "events = out.TSV: allowed yes, no"), &
+            bad("events=\sout.tsv", 2, "events =  out.tsv: allowed yes, no"), &
+            bad("events=", 2, "events = : allowed yes, no") &
             ]
     end function bad_unknown_keys
 
@@ -288,7 +293,7 @@ contains
     function bad_subnormal() result(rows)
         type(bad_case_t), allocatable :: rows(:)
         character(len=*), parameter :: small = "too small for real(16): not 0 and below its " &
-            //"smallest normal number 3.36e-4932"
+            //"smallest normal number 3.3621e-4932"
         rows = [ &
             bad("a=1e-4964", 2, "a = 1e-4964: "//small), &
             bad("a=1e-4965", 2, "a = 1e-4965: "//small), &
@@ -304,8 +309,8 @@ contains
     function bad_words() result(rows)
         type(bad_case_t), allocatable :: rows(:)
         rows = [ &
-            bad("events=yes\s", 2, "events = yes : allowed yes or no"), &
-            bad("events=\tno", 2, "events = \tno: allowed yes or no"), &
+            bad("events=yes\s", 2, "events = yes : allowed yes, no"), &
+            bad("events=\tno", 2, "events = \tno: allowed yes, no"), &
             bad("precision=qp\s", 2, "precision = qp : allowed qp, dp or auto"), &
             bad("precision=\sauto", 2, "precision =  auto: allowed qp, dp or auto"), &
             bad("precision=QP", 2, "precision = QP: allowed qp, dp or auto"), &
@@ -314,7 +319,9 @@ contains
             bad("precision=", 2, "precision = : allowed qp, dp or auto"), &
             bad("e=\xff", 2, "e = \xff: not a number"), &
             bad("\xc3\xa9=1", 2, "\xc3\xa9 = 1: unknown key"), &
-            bad("events=yes precision=dp", 2, "allowed only with precision = qp") &
+            bad("events=yes precision=dp", 2, "allowed only with precision = qp"), &
+            bad("events=x.tsv precision=auto", 2, "events = x.tsv with precision = auto: " &
+            //"allowed only with precision = qp") &
             ]
     end function bad_words
 
@@ -479,7 +486,7 @@ contains
         cli%name = "sphere-row"
         cli%synopsis = "[FILE] [key=value ...]"
         call add_scene_keys(cli)
-        call cli%add_flag("events", "no", "yes adds the event table")
+        call cli%add_table("events", "no", "yes adds the event table, FILE.tsv writes it there")
         call cli%add_choice("precision", "qp", [character(len=4) :: "qp", "dp", "auto"], &
             "the precision of the run")
     end subroutine cli_keys
@@ -492,9 +499,10 @@ contains
         type(input_error_t), allocatable, intent(out) :: refused
         call scene_from_cli(cli, scene, refused)
         if (allocated(refused)) return
-        if (cli%get_flag("events") .and. cli%get_word("precision") /= "qp") then
+        if (cli%get_word("events") /= "no" .and. cli%get_word("precision") /= "qp") then
             allocate (refused)
-            refused%message = "events = yes with precision = "//cli%get_word("precision") &
+            refused%message = "events = "//cli%get_word("events")//" with precision = " &
+                //cli%get_word("precision") &
                 //": allowed only with precision = qp"
         else if (cli%get_word("precision") == "dp") then
             call check_scene_in_dp(cli, scene, refused)

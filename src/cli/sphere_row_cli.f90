@@ -35,18 +35,21 @@ module sphere_row_cli
     use sphere_row_error, only: error_t, fatal_error, error_output
     use sphere_row_read, only: printable
     use sphere_row_key, only: key_t, new_key, set_range, range_text, read_value, origin, &
-        same_text, key_int, key_real, key_reals, key_flag, key_word, key_choice
+        same_text, key_int, key_real, key_reals, key_flag, key_word, key_choice, key_table, &
+        table_suffix
     use sphere_row_scene_file, only: scene_item_t, read_scene_text, scene_items, join_values, &
         file_origin
     use sphere_row_system, only: text_out_t
     implicit none
     private
-    public :: cli_t, string_t, read_command_line, fail, command_args
+    public :: cli_t, string_t, read_command_line, fail, command_args, wrapped, help_width
     ! for the modules that register keys of their own kind (sphere_row_scene_keys)
     public :: find_key, key_index, origin
 
     !> Column where the help text of a key starts in `--help`.
     integer, parameter :: help_column = 22
+    !> The widest line of `--help`, in columns: it reads in a terminal of 100.
+    integer, parameter :: help_width = 100
 
     character(len=*), parameter :: nl = new_line("a")
 
@@ -64,6 +67,8 @@ module sphere_row_cli
         character(len=:), allocatable :: synopsis
         !> Paragraph of `--help` before the key list (lines separated by new_line).
         character(len=:), allocatable :: about
+        !> Text of `--help` after the input rules (what the program writes).
+        character(len=:), allocatable :: epilogue
         !> Registered keys, in the order `--help` lists them.
         type(key_t), allocatable :: keys(:)
         !> True if a bare argument names a scene file (a `&scene` namelist group).
@@ -83,6 +88,8 @@ module sphere_row_cli
         procedure :: add_word => cli_add_word
         !> Register a key taking one word of a fixed set.
         procedure :: add_choice => cli_add_choice
+        !> Register a key taking yes, no or the name of a table file.
+        procedure :: add_table => cli_add_table
         !> Read arguments into the keys' values.
         procedure :: parse => cli_parse
         !> The text of `--help`.
@@ -211,6 +218,18 @@ contains
         end do
         call append_key(this, key)
     end subroutine cli_add_choice
+
+    !> Register a key taking `yes`, `no` or the name of a file ending in
+    !> `.tsv` (a table the program writes there instead of on stdout):
+    !> get_flag is true for yes, get_word gives the text.
+    pure subroutine cli_add_table(this, name, default, help)
+        class(cli_t), intent(inout) :: this
+        character(len=*), intent(in) :: name, default, help
+        type(key_t) :: key
+        call new_key(key, name, key_table, default, help)
+        key%allowed = "yes, no or the name of a file ending in "//table_suffix
+        call append_key(this, key)
+    end subroutine cli_add_table
 
     pure subroutine append_key(cli, key)
         type(cli_t), intent(inout) :: cli
@@ -602,34 +621,77 @@ contains
         text = "usage: "//this%name//" "//this%synopsis//nl
         if (allocated(this%about)) text = text//nl//this%about//nl
         text = text//nl//"Keys (key=default):"//nl//key_lines(this)//nl//input_rules(this)
+        if (allocated(this%epilogue)) text = text//nl//nl//this%epilogue
     end function cli_usage
 
-    !> Two lines per key: `key=default  help`, then what is allowed.
+    !> Per key: `key=default  help`, then what is allowed, each wrapped
+    !> within help_width columns under the help column.
     pure function key_lines(cli) result(text)
         type(cli_t), intent(in) :: cli
         character(len=:), allocatable :: text
         character(len=:), allocatable :: head
+        integer, parameter :: indent = help_column - 1
         integer :: k
         text = ""
         do k = 1, size(cli%keys)
             associate (key => cli%keys(k))
                 head = "  "//key%name//"="//key%shown
-                if (len(head) < help_column - 1) then
-                    head = head//repeat(" ", help_column - 1 - len(head))
+                if (len(head) < indent) then
+                    head = head//repeat(" ", indent - len(head))
                 else
-                    head = head//nl//repeat(" ", help_column - 1)
+                    head = head//nl//repeat(" ", indent)
                 end if
-                text = text//head//key%help//nl//repeat(" ", help_column - 1)//"allowed " &
-                    //key%allowed
-                text = text//nl
+                text = text//head//wrapped(key%help, indent, indent, help_width)//nl &
+                    //repeat(" ", indent)//wrapped("allowed "//key%allowed, indent, indent, &
+                    help_width)//nl
             end associate
         end do
-        if (cli%files) text = text//"  FILE"//repeat(" ", help_column - 7) &
-            //"a scene file (- : standard input): a namelist group &scene key = value, ... /" &
-            //nl &
-            //repeat(" ", help_column - 1)//"of the keys "//file_keys(cli)//";"//nl &
-            //repeat(" ", help_column - 1)//"keys on the command line override the file's"//nl
+        if (cli%files) text = text//"  FILE"//repeat(" ", indent - 6) &
+            //wrapped("a scene file (- : standard input): a namelist group " &
+            //"&scene key = value, ... / of the keys "//file_keys(cli)//"; keys on the " &
+            //"command line override the file's", indent, indent, help_width)//nl
     end function key_lines
+
+    !> `text` broken at its blanks into lines of at most `width` columns: the
+    !> first goes on from column `first`, each further one starts after
+    !> `indent` blanks (a word longer than a line stays whole).
+    pure function wrapped(text, first, indent, width) result(lines)
+        character(len=*), intent(in) :: text
+        integer, intent(in) :: first, indent, width
+        character(len=:), allocatable :: lines
+        integer :: start, finish, column
+        logical :: fresh
+        lines = ""
+        column = first
+        fresh = .true.
+        start = 1
+        do
+            do while (start <= len(text))
+                if (text(start:start) /= " ") exit
+                start = start + 1
+            end do
+            if (start > len(text)) exit
+            finish = index(text(start:), " ")
+            if (finish == 0) then
+                finish = len(text)
+            else
+                finish = start + finish - 2
+            end if
+            if (.not. fresh .and. column + 1 + finish - start + 1 > width) then
+                lines = lines//nl//repeat(" ", indent)
+                column = indent
+                fresh = .true.
+            end if
+            if (.not. fresh) then
+                lines = lines//" "
+                column = column + 1
+            end if
+            lines = lines//text(start:finish)
+            column = column + finish - start + 1
+            fresh = .false.
+            start = finish + 2
+        end do
+    end function wrapped
 
     function input_rules(cli) result(text)
         type(cli_t), intent(in) :: cli
@@ -638,7 +700,8 @@ contains
             //nl//"numbers in full: an optional sign, digits with an optional '.', an optional" &
             //nl//"exponent e, E, d or D with optional sign and digits (0.25, -3, 1e-5, 2.5d3)," &
             //nl//"0 or of magnitude between the smallest and the largest normal real(16)" &
-            //nl//"(3.37e-4932 and 1.18e4932); a range is decided on the number as written;" &
+            //nl//"(3.3621e-4932 and 1.1897e4932); a range is decided on the number as" &
+            //" written;" &
             //nl//"integers: an optional sign and digits; lists: comma-separated numbers." &
             //nl//"Bad input: one line on stderr ("//cli%name//": key = value: allowed ...)," &
             //nl//"exit status 2, nothing on stdout; output that cannot be written: one line" &

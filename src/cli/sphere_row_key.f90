@@ -1,5 +1,6 @@
 !> One key of a program's command line: what it takes (an integer, a real, a
-!> list of reals, yes or no, one word of a fixed set, any word), its allowed
+!> list of reals, yes or no, one word of a fixed set, any word, yes or no or
+!> the name of a table file), its allowed
 !> range, and its value read from the text as given and checked.
 !>
 !> A range is decided on the number as written, not on its rounding to
@@ -15,17 +16,23 @@ module sphere_row_key
     implicit none
     private
     public :: key_t, new_key, set_range, range_text, read_value, origin, same_text
-    public :: key_int, key_real, key_reals, key_flag, key_word, key_choice
+    public :: key_int, key_real, key_reals, key_flag, key_word, key_choice, key_table
+    public :: table_suffix
 
-    !> Kinds of value a key takes.
+    !> Kinds of value a key takes (key_table: yes, no, or the name of a file
+    !> ending in table_suffix).
     integer, parameter :: key_int = 1, key_real = 2, key_reals = 3, key_flag = 4, key_word = 5, &
-        key_choice = 6
+        key_choice = 6, key_table = 7
+
+    !> How the name of a table file given to a key_table ends: a word
+    !> mistyped (`Yes`) is refused rather than taken for a file name.
+    character(len=*), parameter :: table_suffix = ".tsv"
 
     !> One key of a program: what it takes and, after parsing, its value.
     type :: key_t
         !> The key as typed before `=`.
         character(len=:), allocatable :: name
-        !> key_int, key_real, key_reals, key_flag, key_word or key_choice.
+        !> key_int, key_real, key_reals, key_flag, key_word, key_choice or key_table.
         integer :: kind = key_real
         !> Text read as the value when the key is not given ("" : no value).
         character(len=:), allocatable :: default
@@ -160,16 +167,27 @@ contains
             if (index(key%text, ",") > 0 .or. index(key%choices, ","//key%text//",") == 0) then
                 call refuse(key, "", error)
             end if
-        case default
-            ! a word: printable text, no blank at either end
-            if (len(key%text) == 0 .or. has_control(key%text)) then
+        case (key_table)
+            key%flag = same_text(key%text, "yes")
+            if (key%flag .or. same_text(key%text, "no")) return
+            if (.not. is_word(key%text) .or. len(key%text) <= len(table_suffix)) then
                 call refuse(key, "", error)
-            else if (key%text(1:1) == " " .or. key%text(len(key%text):) == " ") then
+            else if (key%text(len(key%text) - len(table_suffix) + 1:) /= table_suffix) then
                 call refuse(key, "", error)
             end if
+        case default
+            if (.not. is_word(key%text)) call refuse(key, "", error)
         end select
         if (allocated(error)) error%message = where//error%message
     end subroutine read_value
+
+    !> A word: printable text, no blank at either end.
+    pure logical function is_word(text)
+        character(len=*), intent(in) :: text
+        is_word = .false.
+        if (len(text) == 0 .or. has_control(text)) return
+        is_word = text(1:1) /= " " .and. text(len(text):) /= " "
+    end function is_word
 
     !> The message `key = value: [reason; ]allowed ...`.
     pure subroutine refuse(key, reason, error)

@@ -21,7 +21,7 @@ module sphere_row_read
         "a number such as 0.25, -3, 1e-5 or 2.5d3"
     !> Why a number below the normal range of real(16) is refused.
     character(len=*), parameter :: too_small = "too small for real(16): not 0 and below " &
-        //"its smallest normal number 3.36e-4932, where it would keep fewer digits or read as 0"
+        //"its smallest normal number 3.3621e-4932, where it would keep fewer digits or read as 0"
 
 contains
 

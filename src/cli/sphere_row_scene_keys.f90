@@ -153,8 +153,11 @@ contains
             real(qp), parameter :: top = real(huge(1.0_dp), qp), low = real(tiny(1.0_dp), qp)
             character(len=:), allocatable :: which, allowed
             integer :: i
-            allowed = "with precision = dp, 0 or a magnitude between "//short_text(low, 3, "up") &
-                //" and "//short_text(top, 3, "down")//" (precision = qp or auto takes it)"
+            ! the two numbers as the messages name them, to 5 digits each: the
+            ! checks are made on the numbers themselves (tiny and huge)
+            allowed = "with precision = dp, 0 or a magnitude in the normal range of real(8), " &
+                //short_text(low, 5)//" to "//short_text(top, 5)//" (precision = qp or auto " &
+                //"takes it)"
             do i = 1, size(xs)
                 if (xs(i) == 0.0_qp .or. (abs(xs(i)) >= low .and. abs(xs(i)) <= top)) cycle
                 which = "precision = dp: "
@@ -162,10 +165,10 @@ contains
                     which = which//"value "//itoa(i)//" is "//short_text(xs(i))//": "
                 end if
                 if (abs(xs(i)) > top) then
-                    which = which//"beyond the largest real(8) number "//short_text(top, 3, "down")
+                    which = which//"beyond the largest real(8) number "//short_text(top, 5)
                 else
                     which = which//"below the smallest normal real(8) number " &
-                        //short_text(low, 3, "down")
+                        //short_text(low, 5)
                 end if
                 call refuse_scale(error, cli, name, which//"; allowed "//allowed)
                 return

@@ -2,9 +2,11 @@
  * what kind of file a path names (so that a device or a FIFO is never opened
  * for reading), reads of standard input in blocks of any length, writes whose
  * failure is reported (gfortran's run-time
- * library drops the error of a write that fails, e.g. on a full disk), and
- * renaming or removing a file. Each returns 0 or the errno of the failure. */
+ * library drops the error of a write that fails, e.g. on a full disk), files
+ * created for such writes, and renaming or removing a file. Each returns 0
+ * (or what it made) or the errno of the failure. */
 #include <errno.h>
+#include <fcntl.h>
 #include <stdio.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -46,6 +48,24 @@ long sphere_row_read_some(int fd, char *text, size_t n)
         if (done >= 0) return (long)done;
         if (errno != EINTR) return -(long)errno;
     }
+}
+
+/* A file opened for writing, created or emptied: its file descriptor, or
+ * -errno. */
+int sphere_row_create(const char *path)
+{
+    int fd;
+    do {
+        fd = open(path, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+    } while (fd < 0 && errno == EINTR);
+    return fd >= 0 ? fd : -errno;
+}
+
+/* Close a file descriptor: 0, or the errno of the failure (a write that a
+ * network file system reports only now). */
+int sphere_row_close(int fd)
+{
+    return close(fd) == 0 ? 0 : errno;
 }
 
 int sphere_row_rename(const char *from, const char *to)

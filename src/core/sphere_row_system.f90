@@ -7,7 +7,10 @@
 !>
 !> `text_out_t` collects lines for a file descriptor (standard output by
 !> default) and writes them a block at a time; the first failure is kept and
-!> every later line dropped, so a program checks once, at `finish`.
+!> every later line dropped, so a program checks once, at `finish`. Made by
+!> `create`, it writes a file under a temporary name (`path.tmp`) that
+!> `commit` renames to `path` once everything is written and `discard`
+!> removes, so that a failed run or write never leaves a partial file.
 module sphere_row_system
     use, intrinsic :: iso_c_binding, only: c_int, c_long, c_char, c_size_t, c_null_char, &
         c_ptr, c_loc
@@ -39,7 +42,17 @@ module sphere_row_system
         integer :: used = 0
         !> errno of the first failed write, 0 while none failed.
         integer :: errno = 0
+        !> A file made by `create`: its final path and the temporary one
+        !> written ("" for standard output); true while the file is open.
+        character(len=:), allocatable :: path, temp
+        logical :: is_open = .false.
     contains
+        !> Create the file `path` (written as path.tmp until `commit`).
+        procedure :: create => out_create
+        !> Rename the finished file to its path.
+        procedure :: commit => out_commit
+        !> Close and remove the file (a failed run or write).
+        procedure :: discard => out_discard
         !> Append a line (its end added).
         procedure :: put => out_put
         !> Append text as it is (line ends included by the caller).
@@ -72,6 +85,18 @@ module sphere_row_system
             integer(c_size_t), value :: n
             integer(c_long) :: count
         end function c_read_some
+
+        function c_create(path) result(fd) bind(c, name="sphere_row_create")
+            import :: c_int, c_ptr
+            type(c_ptr), value :: path
+            integer(c_int) :: fd
+        end function c_create
+
+        function c_close(fd) result(errno) bind(c, name="sphere_row_close")
+            import :: c_int
+            integer(c_int), value :: fd
+            integer(c_int) :: errno
+        end function c_close
 
         function c_rename(from, to) result(errno) bind(c, name="sphere_row_rename")
             import :: c_int, c_ptr
@@ -194,19 +219,72 @@ contains
         end if
     end subroutine out_put_text
 
-    !> Write the rest; `error` (code error_output) names the destination and
-    !> the system's reason if any write failed.
+    !> Create the file `path` for writing, under the name path.tmp until
+    !> `commit`: `errno` is 0, or the system's reason why it cannot be made
+    !> (then nothing was created).
+    subroutine out_create(this, path, errno)
+        class(text_out_t), intent(inout) :: this
+        character(len=*), intent(in) :: path
+        integer, intent(out) :: errno
+        character(kind=c_char, len=:), allocatable, target :: z
+        integer(c_int) :: fd
+        this%path = path
+        this%temp = path//".tmp"
+        this%name = path
+        z = this%temp//c_null_char
+        fd = c_create(c_loc(z))
+        errno = int(max(0_c_int, -fd))
+        if (errno /= 0) return
+        this%fd = fd
+        this%is_open = .true.
+    end subroutine out_create
+
+    !> Write the rest (and close a file made by `create`); `error` (code
+    !> error_output) names the destination and the system's reason if any
+    !> write failed.
     subroutine out_finish(this, error)
         class(text_out_t), intent(inout) :: this
         type(error_t), allocatable, intent(out) :: error
         character(len=:), allocatable :: name
+        integer :: errno
         call write_buffer(this)
+        if (this%is_open) then
+            this%is_open = .false.
+            errno = int(c_close(this%fd))
+            if (this%errno == 0) this%errno = errno
+        end if
         if (this%errno == 0) return
         name = "standard output"
         if (allocated(this%name)) name = this%name
         call fatal_error(error, "output = "//name//": cannot be written (" &
             //system_error_text(this%errno)//"); allowed a writable output", error_output)
     end subroutine out_finish
+
+    !> Give a finished file its path (rename path.tmp to path); an error, and
+    !> the temporary file removed, if the rename fails.
+    subroutine out_commit(this, error)
+        class(text_out_t), intent(inout) :: this
+        type(error_t), allocatable, intent(out) :: error
+        integer :: errno
+        if (.not. allocated(this%temp)) return
+        errno = rename_file(this%temp, this%path)
+        if (errno == 0) return
+        call this%discard()
+        call fatal_error(error, "output = "//this%path//": cannot be written (" &
+            //system_error_text(errno)//"); allowed a writable output", error_output)
+    end subroutine out_commit
+
+    !> Drop a file made by `create`: close it and remove its temporary name,
+    !> so that a run or write that failed leaves nothing behind.
+    subroutine out_discard(this)
+        class(text_out_t), intent(inout) :: this
+        integer :: errno
+        if (.not. allocated(this%temp)) return
+        if (this%is_open) errno = int(c_close(this%fd))
+        this%is_open = .false.
+        this%used = 0
+        errno = remove_file(this%temp)
+    end subroutine out_discard
 
     subroutine write_buffer(this)
         class(text_out_t), intent(inout) :: this

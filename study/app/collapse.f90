@@ -155,7 +155,7 @@ contains
     !> The survey table, the table per row length, the unresolved rows and the
     !> answers.
     subroutine write_tables()
-        integer :: unit, stat, rule, p, a, rows_of
+        integer :: unit, stat, rule, p, a, rows_of, j, k
         character(len=300) :: msg
         type(row_t), allocatable :: lines(:)
         character(len=*), parameter :: answer_columns = "exact"//tab//"certified"//tab// &
@@ -192,7 +192,15 @@ contains
             "mass_ratio[1]"//tab//"closed_gaps"//tab//"v_bound[V]"//tab//"active"//tab// &
             "command", unit, stat, msg)
         call stop_unless_normal(stat, msg)
-        lines = pack(outcome(every, :)%row, outcome(every, :)%answer == answer_unresolved)
+        ! the unresolved rows picked one by one: pack of a component of a
+        ! section of outcome would copy the section to an array temporary
+        allocate (lines(count(outcome(every, :)%answer == answer_unresolved)))
+        k = 0
+        do j = 1, size(outcome, 2)
+            if (outcome(every, j)%answer /= answer_unresolved) cycle
+            k = k + 1
+            lines(k) = outcome(every, j)%row
+        end do
         call write_rows(unit, lines)
         call close_table(unit, stat, msg)
         call stop_unless_written(stat, msg)

@@ -19,7 +19,7 @@ module sphere_row_study_cli
     use sphere_row_cli, only: cli_t, read_command_line, fail_with => fail
     use sphere_row_scene_keys, only: scene_from_cli, add_scene_keys
     use sphere_row_error, only: error_t, fatal_error, error_output
-    use sphere_row_tables, only: discard_tables
+    use sphere_row_tables, only: discard_tables, report_tables
     use sphere_row_system, only: text_out_t
     implicit none
     private
@@ -68,7 +68,9 @@ contains
         writes_tables = .true.
         if (present(tables)) writes_tables = tables
         if (writes_tables) call cli%add_word("out", "results", &
-            "directory of the tables (made if missing)")
+            "directory of the tables (made if missing); each table is told on stdout as " &
+            //"it is written")
+        if (writes_tables) call report_tables(name)
     end subroutine start_program
 
     !> Read the command line into the keys registered: `--help` prints the

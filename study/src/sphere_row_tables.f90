@@ -5,16 +5,18 @@
 !> renamed when it is complete: a program that fails, or a disk that fills,
 !> leaves the previous table or none, never a partial one. gfortran's run-time
 !> library does not report a write that fails, so `close_table` compares the
-!> bytes written with the size of the file on disk.
+!> bytes written with the size of the file on disk. A program that called
+!> `report_tables` says on stdout where each table went, as it gets its name.
 module sphere_row_tables
     use, intrinsic :: iso_fortran_env, only: int64
     use sphere_row, only: qp, status_normal, status_invalid, real_text, int_text, &
         number_text_length, status_text, status_word_length
-    use sphere_row_system, only: rename_file, remove_file, system_error_text
+    use sphere_row_system, only: rename_file, remove_file, system_error_text, text_out_t
+    use sphere_row_error, only: error_t
     implicit none
     private
     public :: open_table, close_table, discard_tables, write_answer, answer_header, tab, &
-        split_tabs, cpu_model, yes_no
+        split_tabs, cpu_model, yes_no, report_tables
     public :: row_t, write_rows
 
     !> The field separator.
@@ -32,6 +34,8 @@ module sphere_row_tables
 
     !> The tables open now.
     type(open_table_t), allocatable :: open_tables(:)
+    !> The program that reports each table it wrote (unset: no report).
+    character(len=:), allocatable :: reporter
 
     !> One row of a table, built field by field (tab-separated) where OpenMP
     !> threads build rows at once: numbers and words are written into
@@ -179,6 +183,8 @@ contains
         integer :: k, ios, errno
         integer(int64) :: pos, bytes
         character(len=:), allocatable :: path
+        type(text_out_t) :: out
+        type(error_t), allocatable :: error
         stat = status_invalid
         k = table_index(unit)
         if (k == 0) then
@@ -203,9 +209,24 @@ contains
             errno = remove_file(path//".tmp")
             return
         end if
+        if (allocated(reporter)) then
+            call out%put(reporter//": wrote "//path)
+            call out%finish(error)
+            if (allocated(error)) then
+                msg = error%message
+                return
+            end if
+        end if
         stat = status_normal
         msg = ""
     end subroutine close_table
+
+    !> From now on, every table that gets its name is told on stdout as
+    !> `program: wrote dir/name` (the directory as the key `out` gave it).
+    subroutine report_tables(program)
+        character(len=*), intent(in) :: program
+        reporter = program
+    end subroutine report_tables
 
     !> Close and remove every table still being written (a program that
     !> stops on an error leaves none behind).

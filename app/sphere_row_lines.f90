@@ -1,0 +1,134 @@
+!> What sphere-row writes, said in one place: every line of the answer (its
+!> name and what it means, in the order the lines come), every column of the
+!> event table with its unit, and the units. `--help` prints them from here;
+!> docs/cli.md's table of the lines lists the same names (make check-docs
+!> compares the two). A new output line is one more entry in answer_lines.
+module sphere_row_lines
+    use sphere_row_cli, only: wrapped, help_width
+    implicit none
+    private
+    public :: line_t, answer_lines, event_columns, output_help
+
+    !> One line of the answer, or one column of the event table.
+    type :: line_t
+        !> The line's first word (`v<i>`: v1 ... vp), or the column's header.
+        character(len=:), allocatable :: name
+        !> What it holds; a unit in brackets: [L/V] a time, [V] a velocity,
+        !> [L] a length.
+        character(len=:), allocatable :: what
+    end type line_t
+
+    !> Column of `--help` where the meaning of a line starts.
+    integer, parameter :: what_column = 24
+
+contains
+
+    pure function entry(name, what) result(line)
+        character(len=*), intent(in) :: name, what
+        type(line_t) :: line
+        line%name = name
+        line%what = what
+    end function entry
+
+    !> The answer's lines, `name value` each, in the order they are written.
+    function answer_lines() result(lines)
+        type(line_t), allocatable :: lines(:)
+        lines = [ &
+            entry("collisions", "binary collisions of the run"), &
+            entry("t_end", "time of the last event, collision or collapse limit [L/V]"), &
+            entry("status", "normal (no pair closes any more), quasi_plastic (collapse " &
+            //"limits were taken) or max_collisions (the work budget was spent)"), &
+            entry("precision", "the kind that answered: qp (real(16)) or dp (real(8))"), &
+            entry("certified", "precision=auto only: yes where real(8)'s rounding " &
+            //"certificate held"), &
+            entry("not_dp", "precision=auto answered in real(16): why real(8) was not enough"), &
+            entry("answer", "how good the answer is: exact (every decision exact to the " &
+            //"working precision), certified (a collapse limit taken on a numerical " &
+            //"certificate), tolerance (the rates fell below tol*v0), bounded (a limit " &
+            //"taken within a bound) or unresolved (the work budget ran out)"), &
+            entry("v_bound", "a bound on the error of the final velocities [V]: for exact " &
+            //"and certified answers a bound on the run's own rounding (`rounding` where it " &
+            //"is the working precision's), else the answer's bound; the velocities are " &
+            //"printed to its decade"), &
+            entry("collapses", "with collapse limits: how many limits were taken"), &
+            entry("closed_form_limits", "limits taken in closed form"), &
+            entry("limits_exact", "limits that are exact"), &
+            entry("limits_certified", "limits taken on a numerical certificate"), &
+            entry("limits_bounded", "limits taken within a bound on the group's velocities"), &
+            entry("limits_tolerance", "limits taken because gaps and rates fell below tol"), &
+            entry("collapse", "proven (every limit exact or certified) or unproven"), &
+            entry("collapse_spheres", "the first group's first and last sphere, as 1-4"), &
+            entry("collapse_t", "its time [L/V]"), &
+            entry("separation_scale", "a row that separates far below v0: its largest final " &
+            //"rate over v0"), &
+            entry("separation_not_excluded_below", "where a limit or the end rests on tol: " &
+            //"the scale tol*v0 below which a separation is not excluded [V]"), &
+            entry("active", "unresolved only: the groups still active, first-last sphere each"), &
+            entry("v<i>", "final velocity of sphere i = 1 ... p [V], with the digits its bound " &
+            //"leaves (every digit where the answer is exact or certified); 3E-02 or 0E-02: " &
+            //"a velocity rounded at its bound's decade"), &
+            entry("x<i>", "position of sphere i at t_end [L], every digit of the kind"), &
+            entry("y<i>", "gap i = 1 ... p-1 (between spheres i and i+1) at t_end [L]") &
+            ]
+    end function answer_lines
+
+    !> The columns of the event table: the fixed ones, then y<i> and dy<i>
+    !> for i = 1 ... p-1 (the header writes each with its unit).
+    function event_columns() result(lines)
+        type(line_t), allocatable :: lines(:)
+        lines = [ &
+            entry("event", "the event's number: 0 the start, then one more per collision " &
+            //"or collapse limit"), &
+            entry("kind", "start, collision or collapse"), &
+            entry("first", "a collision's left sphere i, a collapse's first sphere"), &
+            entry("last", "a collision's right sphere i+1, a collapse's last sphere"), &
+            entry("t[L/V]", "time of the event"), &
+            entry("w[V]", "a collision's approach rate: the rate of its gap just before it " &
+            //"(negative; 0 for start and collapse)"), &
+            entry("x1[L]", "position of sphere 1 after the event"), &
+            entry("dx1[V]", "velocity of sphere 1 after the event"), &
+            entry("y<i>[L]", "gap i after the event"), &
+            entry("dy<i>[V]", "rate of gap i after the event (its spheres' velocity " &
+            //"difference v(i+1) - v(i))") &
+            ]
+    end function event_columns
+
+    !> The section of `--help` on what sphere-row writes: the answer's lines,
+    !> the event table's columns and the units, each within help_width.
+    function output_help() result(text)
+        character(len=:), allocatable :: text
+        character(len=*), parameter :: nl = new_line("a")
+        text = "Output on stdout, one quantity per line as `name value`, in this order (a " &
+            //"line" //nl//"shows only where it applies):"//nl//listed(answer_lines()) &
+            //nl//wrapped("Event table (events=yes: on stdout before the answer; " &
+            //"events=FILE.tsv: alone in that file, written as FILE.tsv.tmp and renamed " &
+            //"when complete, no file if the run or a write fails): TSV, one header row " &
+            //"naming each column with its unit, then one row per event:", 0, 0, help_width) &
+            //nl//listed(event_columns()) &
+            //nl//wrapped("Units: L is the unit of the lengths d, a and gaps, V the unit of " &
+            //"the speed v0, L/V the unit of time (d = a = v0 = 1 by default). Reals carry " &
+            //"every digit of the kind that answered: 34 significant digits in real(16), " &
+            //"16 in real(8).", 0, 0, help_width)
+    end function output_help
+
+    !> `  name  what` per entry, the meaning wrapped under what_column.
+    function listed(lines) result(text)
+        type(line_t), intent(in) :: lines(:)
+        character(len=:), allocatable :: text
+        character(len=*), parameter :: nl = new_line("a")
+        character(len=:), allocatable :: head
+        integer :: i
+        text = ""
+        do i = 1, size(lines)
+            head = "  "//lines(i)%name
+            if (len(head) < what_column - 1) then
+                head = head//repeat(" ", what_column - 1 - len(head))
+            else
+                head = head//nl//repeat(" ", what_column - 1)
+            end if
+            text = text//head//wrapped(lines(i)%what, what_column - 1, what_column - 1, &
+                help_width)//nl
+        end do
+    end function listed
+
+end module sphere_row_lines
