@@ -2,7 +2,10 @@
 #
 #   make test            fpm test of the engine and of the study (installs missing
 #                        prerequisites first): the quick suite, each test a few seconds
-#   make test-long       the same tests in their deep versions (more cases, longer runs)
+#   make test-long       the same tests in their deep versions (more cases, longer runs),
+#                        and 300 near-edge rows checked against the replay
+#   make replay          ARGS="p=5 e=0.2593": the independent high-precision replay of a
+#                        scene (tools/replay, mpmath): separated or collapsed, to 1e-300
 #   make test-times      make test, then build/test-times.tsv: every test's wall time
 #   make mutants         the mutation check: small bugs, each in a copy, must fail make test
 #   make differential    REV=... ARGS="n=2000": the same random rows by a revision and by
@@ -103,13 +106,14 @@ ECRIT := $(RESULTS)/ecrit.tsv $(RESULTS)/ecrit_answers.tsv $(RESULTS)/ecrit_map.
 # the full e_c(p) sweep (make ecrit-full): its keys, its last row, and the rows
 # that check-results regenerates with its keys and compares with its tables
 ECRIT_FULL := results/ecrit_full
-ECRIT_FULL_KEYS := p_min=3 n_scan=2000 p_long=21 n_scan_long=200 robust_p_max=10
+ECRIT_FULL_KEYS := p_min=3 n_scan=1000 p_long=21 n_scan_long=200 robust_p_max=10
 ECRIT_FULL_P_MAX := 128
 ECRIT_FULL_CHECK_P := 6
 # machine-dependent timings (like bench.tsv): made by `make bench`, not by
 # `make study`, and not compared by check-results
 COST := $(RESULTS)/cost.tsv $(RESULTS)/cost_summary.tsv $(RESULTS)/cost_vs_loop.tsv
-TABLES := $(A1) $(A2) $(B1) $(B2) $(C1) $(C2) $(METHODS) $(COLLAPSE) $(ECRIT)
+ECRIT_REPLAY := $(RESULTS)/ecrit_replay.tsv
+TABLES := $(A1) $(A2) $(B1) $(B2) $(C1) $(C2) $(METHODS) $(COLLAPSE) $(ECRIT) $(ECRIT_REPLAY)
 ANSWERS := $(filter %_answers.tsv,$(TABLES))
 
 # the space-time diagrams (c12-spacetime, study/spacetime.gp): the definition's
@@ -131,7 +135,7 @@ PNG := $(FIGURES:%=$(RESULTS)/%.png) $(RESULTS)/methods_work_precision.png \
 SVG := $(FIGURES:%=$(RESULTS)/%.svg) $(RESULTS)/methods_work_precision.svg \
        $(RESULTS)/methods_stability.svg $(SPACETIME:%=$(RESULTS)/%.svg)
 
-.PHONY: all help prereqs install uninstall check-docs test-tools test test-long test-times mutants differential readme-commands test-mpi check-layers study tables \
+.PHONY: all help prereqs replay install uninstall check-docs test-tools test test-long test-times mutants differential readme-commands test-mpi check-layers study tables \
         figures bench callgrind check-results docs lint clean fuzz plot examples ecrit-full
 
 all: study
@@ -205,8 +209,22 @@ differential: prereqs ## the same random rows by REV (default HEAD) and the work
 mutants: prereqs ## the mutation check (tools/mutants): each small bug must fail make test
 	python3 tools/mutants
 
-test-long: ## the tests in their deep versions (more random cases, longer runs; CI runs it)
-	@$(MAKE) --no-print-directory test TEST_ARGS=long
+# test-long adds the near-edge rows against the replay (tools/replay-check:
+# 300 rows, a few minutes on 2 cores) and a last line that counts both
+test-long: prereqs $(CLI_STAMP) ## the tests in their deep versions, and 300 near-edge rows against the replay
+	@mkdir -p build
+	@set -o pipefail; status=0; \
+	$(MAKE) --no-print-directory test TEST_ARGS=long | tee build/test-long.log || status=1; \
+	bash .ci/prereqs replay; \
+	python3 tools/replay-check sphere_row=$(BIN)/sphere-row > build/test-replay.log 2>&1 \
+		|| status=1; cat build/test-replay.log; \
+	tail -n 1 build/test-long.log build/test-replay.log | awk '/^[0-9]+ passed, [0-9]+ failed$$/ \
+		{ p += $$1; f += $$3; n++ } END { f += 2 - n; printf "%d passed, %d failed\n", p, f; \
+		exit f > 0 }' && exit $$status
+
+replay: ## the high-precision replay of a scene: ARGS="p=5 e=0.2593" (tools/replay, mpmath)
+	@bash .ci/prereqs replay
+	@python3 tools/replay $(ARGS)
 
 # every test's line ends in its wall time: `ok   suite/name (1.23 s)`
 test-times: test ## make test, then build/test-times.tsv: each test's seconds, slowest first
@@ -311,6 +329,10 @@ $(METHODS) &: $(BUILD_STAMP)
 	$(call study_run,c12-methods)
 $(ECRIT) &: $(ECRIT_STAMP)
 	$(call study_run,c12-ecrit,,$(ECRIT_RUN))
+# the e_c table's points of rows p <= 6 run again by the independent replay
+$(ECRIT_REPLAY): $(ECRIT) $(CLI_STAMP) tools/replay tools/replay-ecrit
+	@bash .ci/prereqs replay
+	python3 tools/replay-ecrit $(RESULTS) p_max=6 sphere_row=$(abspath $(BIN))/sphere-row
 $(COST) &: $(BUILD_STAMP)
 	$(call study_run,c12-cost)
 
@@ -391,7 +413,7 @@ check-results: prereqs ## regenerate the tables in build/ and compare with resul
 
 # the full e_c(p) sweep: its tables, its two figures, and sweep.tsv with its
 # wall time, ranks and threads (MPI=1 NP=... for ranks; OMP_NUM_THREADS threads)
-ecrit-full: prereqs $(ECRIT_STAMP) ## the full e_c(p) sweep p = 3 ... 128 into results/ecrit_full/
+ecrit-full: prereqs $(ECRIT_STAMP) $(CLI_STAMP) ## the full e_c(p) sweep p = 3 ... 128 into results/ecrit_full/, its points run again by the replay
 	@mkdir -p $(ECRIT_FULL)
 	@set -e; start=$$(date +%s.%N); \
 	$(ECRIT_RUN) $(ECRIT_FULL_KEYS) p_max=$(ECRIT_FULL_P_MAX) out=$(ECRIT_FULL); \
@@ -403,6 +425,8 @@ ecrit-full: prereqs $(ECRIT_STAMP) ## the full e_c(p) sweep p = 3 ... 128 into r
 		> $(ECRIT_FULL)/sweep.tsv
 	set -e; for f in ecrit ecrit_map; do for t in png svg; do \
 		gnuplot -e "dir='$(ECRIT_FULL)'; term='$$t'; out='$(ECRIT_FULL)/$$f.$$t'" study/$$f.gp; done; done
+	@bash .ci/prereqs replay
+	python3 tools/replay-ecrit $(ECRIT_FULL) p_max=20 sphere_row=$(abspath $(BIN))/sphere-row
 
 # c12-ecrit on a short range of p (rows 3 ... 6 take the real(16) and
 # rate-map stages, so every field of a row travels between ranks): the serial

@@ -36,33 +36,40 @@ contains
         lines = [ &
             entry("collisions", "binary collisions of the run"), &
             entry("t_end", "time of the last event, collision or collapse limit [L/V]"), &
-            entry("status", "normal (no pair closes any more), quasi_plastic (collapse " &
-            //"limits were taken) or max_collisions (the work budget was spent)"), &
+            entry("status", "normal (no pair closes any more), quasi_plastic (the " &
+            //"definition's case: some group's velocities were taken to one; whether it " &
+            //"collapsed is the `collapse` line's) or max_collisions (the work budget was " &
+            //"spent)"), &
             entry("precision", "the kind that answered: qp (real(16)) or dp (real(8))"), &
             entry("certified", "precision=auto only: yes where real(8)'s rounding " &
             //"certificate held"), &
             entry("not_dp", "precision=auto answered in real(16): why real(8) was not enough"), &
-            entry("answer", "how good the answer is: exact (every decision exact to the " &
-            //"working precision), certified (a collapse limit taken on a numerical " &
-            //"certificate), tolerance (the rates fell below tol*v0), bounded (a limit " &
-            //"taken within a bound) or unresolved (the work budget ran out)"), &
-            entry("v_bound", "a bound on the error of the final velocities [V]: for exact " &
-            //"and certified answers a bound on the run's own rounding (`rounding` where it " &
-            //"is the working precision's), else the answer's bound; the velocities are " &
-            //"printed to its decade"), &
+            entry("answer", "what holds in exact arithmetic (docs/collapse.md): exact (the " &
+            //"row separated, or e = 0's pools), certified (collapse limits taken on a " &
+            //"certificate that rests on no tolerance), tolerance (something rests on tol: " &
+            //"a group merged because its gaps and rates fell below it, a closing rate " &
+            //"below tol*v0 passed over or left at the end), bounded (a limit taken within " &
+            //"vtol) or unresolved (the work budget ran out)"), &
+            entry("v_bound", "the largest distance of a final velocity from exact " &
+            //"arithmetic's [V]: the run's own rounding (a running bound of the arithmetic " &
+            //"it did, along its collisions) plus, where the answer is not exact or " &
+            //"certified, the answer's bound; the velocities are printed to its decade"), &
             entry("collapses", "with collapse limits: how many limits were taken"), &
             entry("closed_form_limits", "limits taken in closed form"), &
-            entry("limits_exact", "limits that are exact"), &
-            entry("limits_certified", "limits taken on a numerical certificate"), &
-            entry("limits_bounded", "limits taken within a bound on the group's velocities"), &
+            entry("limits_exact", "limits that are exact (e = 0's pools)"), &
+            entry("limits_certified", "limits taken on a certificate (a cycle's, a touching " &
+            //"block's)"), &
             entry("limits_tolerance", "limits taken because gaps and rates fell below tol"), &
-            entry("collapse", "proven (every limit exact or certified) or unproven"), &
+            entry("limits_bounded", "limits taken within vtol (a long cascade at one instant)"), &
+            entry("collapse", "proven (every limit certified or exact, no collision passed " &
+            //"over) or unproven"), &
+            entry("separation_not_excluded_below", "collapse unproven only: 2 v_bound/v0, the " &
+            //"scale of final rates inside a merged group that the bound allows; a " &
+            //"separation below it is not excluded"), &
             entry("collapse_spheres", "the first group's first and last sphere, as 1-4"), &
             entry("collapse_t", "its time [L/V]"), &
-            entry("separation_scale", "a row that separates far below v0: its largest final " &
-            //"rate over v0"), &
-            entry("separation_not_excluded_below", "where a limit or the end rests on tol: " &
-            //"the scale tol*v0 below which a separation is not excluded [V]"), &
+            entry("separation_scale", "a row that separates far below v0 (answer exact): " &
+            //"its largest final rate over v0"), &
             entry("active", "unresolved only: the groups still active, first-last sphere each"), &
             entry("v<i>", "final velocity of sphere i = 1 ... p [V], with the digits its bound " &
             //"leaves (every digit where the answer is exact or certified); 3E-02 or 0E-02: " &

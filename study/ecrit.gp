@@ -29,6 +29,7 @@ set size 1,0.62
 set origin 0,0.32
 plot f using (column("p")):(1 - column("e_finite_min[1]")):(1 - top("e_collapse_max[1]", "e_finite_min[1]")):(1 - column("e_finite_min[1]")) \
         with yerrorbars pt 7 ps 0.6 lc rgb '#1f77b4' title '1 - e_c (lowest separated point; bar: mixed band)', \
+     f using (column("p")):(1 - column("e_collapse_max[1]")) with points pt 6 ps 0.8 lc rgb '#9467bd' title 'highest point certified to collapse', \
      f using (column("p")):(column("fit_power[1]")) with lines lw 2 lc rgb '#d62728' title sprintf('%.3g p^{-%.3f}', c, beta), \
      f using (column("p")):(column("fit_c_over_p[1]")) with lines dt 3 lw 2 lc rgb '#2ca02c' title sprintf('%.3g / p', cp), \
      f using (column("p")):(column("fit_mcnamara_young[1]")) with lines dt 2 lw 2 lc rgb '#7f7f7f' title sprintf('McNamara-Young: p = %.3g (-ln(1-e))/(1-e)', k)

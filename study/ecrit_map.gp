@@ -20,8 +20,10 @@ h(p) = real(word(rows, 3*int(p - p0) + 3))
 x(e, p) = (e - ef(p))/(1 - ef(p))
 from(p) = x(column("e_first[1]") - h(p)/2, p)
 to(p) = x(column("e_last[1]") + h(p)/2, p)
-colour(o) = o eq 'separated' ? 0x1f77b4 : o eq 'certified' ? 0xd62728 : o eq 'bounded' ? 0xff7f0e : 0x7f7f7f
-set title "C12 study e_{crit}(p): outcome of each scan point near the edge (real(16), tol 2e-34)"
+colour(o) = o eq 'separated' ? 0x1f77b4 : o eq 'certified' ? 0xd62728 : o eq 'unproven' ? 0xff7f0e : 0x7f7f7f
+# what the map shows (rows, points, tolerances, budget), from ecrit_answers.tsv
+shows = system("awk -F'\t' '$1 == \"ecrit.rows\" { print $6 }' ".dir."/ecrit_answers.tsv")
+set title "C12 study e_{crit}(p): outcome of each scan point near the edge\n{/*0.8 ".shows."}"
 set xlabel "(e - e_f) / (1 - e_f),  e_f = lowest separated point of the row"
 set ylabel "number of spheres p"
 set grid
@@ -30,5 +32,5 @@ plot m using (strcol("scan") eq "real16" ? from(column("p")) : NaN):(column("p")
         with vectors nohead lw 3 lc rgb variable notitle, \
      NaN with lines lw 4 lc rgb '#1f77b4' title 'separated', \
      NaN with lines lw 4 lc rgb '#d62728' title 'collapse, certified', \
-     NaN with lines lw 4 lc rgb '#ff7f0e' title 'collapse, bounded', \
+     NaN with lines lw 4 lc rgb '#ff7f0e' title 'merged at tol, collapse unproven', \
      NaN with lines lw 4 lc rgb '#7f7f7f' title 'undecided'

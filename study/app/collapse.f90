@@ -28,7 +28,7 @@ program c12_collapse
     type(cli_t) :: cli
     character(len=:), allocatable :: out
     integer :: n, n_before, cap, seed, p_max
-    real(qp) :: span, equal_share, vtol
+    real(qp) :: span, equal_share, vtol, tol
     !> What one run leaves for the tables.
     type :: outcome_t
         integer :: answer = 0
@@ -60,6 +60,8 @@ program c12_collapse
         hi=1.0_qp)
     call cli%add_real("vtol", "-1", "the velocity tolerance of a bounded answer of every row "// &
         "(below 0: the engine's default)", hi=1.0_qp, hi_open=.true.)
+    call cli%add_real("tol", "-1", "the insignificance tolerance of every row (below 0: the "// &
+        "engine's default, real(16)'s epsilon)", hi=1.0_qp, hi_open=.true.)
     call read_keys(cli)
     out = cli%get_word("out")
     n = cli%get_int("n")
@@ -70,6 +72,7 @@ program c12_collapse
     span = cli%get_real("span")
     equal_share = cli%get_real("equal_share")
     vtol = cli%get_real("vtol")
+    tol = cli%get_real("tol")
 
     call run_survey()
     call write_tables()
@@ -88,6 +91,7 @@ contains
             call survey_scene(survey, rows(i))
             rows(i)%max_collisions = cap
             if (vtol >= 0) rows(i)%vtol = vtol
+            if (tol >= 0) rows(i)%tol = tol
         end do
         call survey_close(survey)
         ! jobs 1..n: the rows with every rule; n+1..n+n_before: the first

@@ -16,7 +16,7 @@ program c12_ecrit
     use sphere_row_ecrit, only: ecrit_settings_t, ecrit_row_t, ecrit_row, power_fit, &
         mcnamara_young_k, mcnamara_young_e, outcome_word, row_bytes, row_from_bytes, edge_t, &
         edge_of, scan_point, decimal_text, digits_of, outcome_finite, outcome_certified, &
-        outcome_bounded, outcome_undecided
+        outcome_unproven, outcome_undecided
     use sphere_row_ranks, only: ranks_t, record_t, ranks_start, ranks_finish, owner_of, &
         gather_records, layout_cyclic
     implicit none
@@ -77,6 +77,7 @@ contains
         s%n_scan_long = cli%get_int("n_scan_long")
         s%p_long = cli%get_int("p_long")
         s%tol_scan = cli%get_real("tol_scan")
+        s%tol_scan_long = cli%get_real("tol_scan_long")
         s%max_collisions_scan = cli%get_int("max_collisions_scan")
         s%window = cli%get_real("window")
         s%widen_max = cli%get_int("widen_max")
@@ -154,18 +155,24 @@ contains
     !> ecrit.tsv: one row per p with the two ends of its edge (each with the
     !> width it is known to within and only the decimals that width earns),
     !> the mixed band, the counts of the scan, the rate map where there is
-    !> one (30 digits) and the three fits of 1 - e_c.
+    !> one (30 digits), the three fits of 1 - e_c, and the bisection's
+    !> bracket: the highest e it saw certified and the lowest it saw separate,
+    !> and the scan's highest certified and lowest separated points (20
+    !> digits: the points run, not estimates of e_c; tools/replay-ecrit runs
+    !> them again).
     subroutine write_rows()
         integer :: j
         call open_table(out, "ecrit.tsv", "p"//tab//"e_collapse_max[1]"//tab// &
             "collapse_width[1]"//tab//"e_certified_max[1]"//tab//"e_finite_min[1]"//tab// &
             "finite_width[1]"//tab// &
             "band"//tab//"band_points"//tab//"band_collapse_share"//tab//"points"//tab// &
-            "separated"//tab//"certified"//tab//"bounded"//tab//"undecided"//tab// &
+            "separated"//tab//"certified"//tab//"unproven"//tab//"undecided"//tab// &
             "finite_scale_decade"//tab//"window_from[1]"//tab//"window_to[1]"//tab// &
             "widenings"//tab//"e_crit_rate_map[1]"//tab//"closed_form"//tab// &
             "closed_form_value[1]"//tab//"fit_power[1]"//tab//"fit_c_over_p[1]"//tab// &
-            "fit_mcnamara_young[1]", unit, stat, msg)
+            "fit_mcnamara_young[1]"//tab//"bisect_certified[1]"//tab// &
+            "bisect_separated[1]"//tab//"certified_point[1]"//tab//"separated_point[1]", &
+            unit, stat, msg)
         call stop_unless_normal(stat, msg)
         do j = 1, size(ps)
             associate (r => rows(j), g => edges(j))
@@ -181,14 +188,18 @@ contains
                     optional_text(real_str(real(g%band_collapses, qp)/max(1, g%band_points), 2), &
                     g%mixed)//tab//itoa(size(r%outcomes))//tab//itoa(g%counts(outcome_finite)) &
                     //tab//itoa(g%counts(outcome_certified))//tab// &
-                    itoa(g%counts(outcome_bounded))//tab//itoa(g%counts(outcome_undecided))//tab// &
+                    itoa(g%counts(outcome_unproven))//tab//itoa(g%counts(outcome_undecided))//tab// &
                     optional_text(itoa(g%finite_decade), g%finite_min <= 1.0_qp)//tab// &
                     grid_text(r, r%e_from)//tab//grid_text(r, r%e_to)//tab//itoa(r%widenings) &
                     //tab//optional_text(real_str(r%e_map, 30), r%has_map)//tab// &
                     trim(r%form%text)//tab//optional_text(real_str(r%form%value, 30), &
                     r%form%found)//tab//fit_text(c_fit*p_real(j)**slope, n_large >= 2)//tab// &
                     fit_text(c_inverse/p_real(j), n_large >= 1)//tab// &
-                    fit_text(1.0_qp - mcnamara_young_e(r%p, k_my), k_my > 0.0_qp)
+                    fit_text(1.0_qp - mcnamara_young_e(r%p, k_my), k_my > 0.0_qp)//tab// &
+                    optional_text(real_str(r%b%e_certified, 20), r%b%e_certified >= 0.0_qp) &
+                    //tab//optional_text(real_str(r%b%e_high, 20), r%b%e_high < 1.0_qp) &
+                    //tab//optional_text(real_str(g%certified_max, 20), g%certified_max >= 0.0_qp) &
+                    //tab//optional_text(real_str(g%finite_min, 20), g%finite_min <= 1.0_qp)
             end associate
         end do
         call close_table(unit, stat, msg)
@@ -313,13 +324,15 @@ contains
             "p = "//itoa(p_min)//" ... "//itoa(p_max)//"; "//itoa(n_points)//" points in all, "// &
             "each row's scan "//itoa(s%n_scan)//" points ("//itoa(s%n_scan_long)//" from p = "// &
             itoa(s%p_long)//") in real(16) at tol = "// &
-            real_str(s%tol_scan, 2)//", max_collisions = "//itoa(s%max_collisions_scan))
+            real_str(s%tol_scan, 2)//" ("//real_str(s%tol_scan_long, 2)//" from p = "// &
+            itoa(s%p_long)//"), max_collisions = "//itoa(s%max_collisions_scan))
         call write_answer(unit, "ecrit.mixed_rows", itoa(n_mixed), "-", "-", "-", &
-            "rows whose scan has a separated point below a collapsing one: the collapse set "// &
-            "is not one interval [0, e_c) on the scan")
+            "rows whose scan has a separated point below one certified to collapse (in "// &
+            "exact arithmetic): the collapse set is not one interval [0, e_c) on the scan")
         call write_answer(unit, "ecrit.undecided_points", itoa(n_undecided), "-", "-", "-", &
             "scan points that neither separated nor took a collapse limit within "// &
-            itoa(s%max_collisions_scan)//" collisions: counted apart, never as either")
+            itoa(s%max_collisions_scan)//" collisions: counted apart, never as either "// &
+            "(points merged at tol, collapse unproven, are counted apart too)")
         call write_answer(unit, "ecrit.first_mixed_p", optional_text(itoa(first_mixed), &
             first_mixed > 0), "-", "-", "-", "the shortest row whose scan is mixed")
         call write_answer(unit, "ecrit.band_relative_max", real_str(band(widest), 2), "-", &
@@ -366,6 +379,14 @@ contains
         form = "no closed form found among tan^2(j pi/k) and roots of integer polynomials "// &
             "of degree <= 4 with small coefficients"
         if (rows(i)%form%found) form = "closed form found: "//trim(rows(i)%form%text)
+        if (rows(i)%b%e_certified >= 0.0_qp .and. rows(i)%b%e_high < 1.0_qp) then
+            call write_answer(unit, "ecrit.bracket_p"//itoa(p), real_str(rows(i)%b%e_high &
+                - rows(i)%b%e_certified, 2), "rate_map_inside", trim(merge("yes", "no ", &
+                rows(i)%b%e_certified < rows(i)%e_map .and. rows(i)%e_map < rows(i)%b%e_high)), &
+                "-", "width of the bisection's bracket at tol = "//real_str(s%tol, 2)//": a "// &
+                "point certified to collapse at e = "//real_str(rows(i)%b%e_certified, 20)// &
+                ", a point separated at e = "//real_str(rows(i)%b%e_high, 20))
+        end if
         if (check == "-") then
             associate (g => edges(i))
                 call write_answer(unit, "ecrit.p"//itoa(p), real_str(rows(i)%e_map, 30), &
@@ -463,9 +484,11 @@ contains
             hi=1000000)
         call cli%add_int("p_long", "21", "first row with n_scan_long points (4097: none)", &
             lo=3, hi=4097)
-        call cli%add_real("tol_scan", "2e-34", "tolerance of the scan's runs (real(16)'s " &
-            //"epsilon rounded up: a tol below it turns the calendar off)", lo=1.0e-4900_qp, &
-            hi=0.5_qp)
+        call cli%add_real("tol_scan", "1e-300", "tolerance of the scan's runs up to p_long - 1",&
+            lo=1.0e-4900_qp, hi=0.5_qp)
+        call cli%add_real("tol_scan_long", "2e-34", "tolerance of the scan's runs from p_long " &
+            //"on (real(16)'s epsilon rounded up: a tol below it turns the calendar off)", &
+            lo=1.0e-4900_qp, hi=0.5_qp)
         call cli%add_int("max_collisions_scan", "100000", "safety net of the scan's runs: a " &
             //"run that reaches it is undecided", lo=1)
         call cli%add_real("window", "0.02", "half-width of the scan over 1 - e at the edge", &
@@ -473,7 +496,7 @@ contains
         call cli%add_int("widen_max", "3", "most doublings of the window", lo=0, hi=20)
         call cli%add_int("robust_p_max", "8", "rows scanned again in real64 and at tol_deep", &
             lo=0, hi=4096)
-        call cli%add_real("tol_deep", "1e-300", "tolerance of the deep scan (real(16))", &
+        call cli%add_real("tol_deep", "1e-4000", "tolerance of the deep scan (real(16))", &
             lo=1.0e-4900_qp, hi=0.5_qp)
         call cli%add_int("period_max", "128", "longest collapse cycle looked for", &
             lo=1, hi=100000)

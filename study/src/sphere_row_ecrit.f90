@@ -4,8 +4,9 @@
 !> every run ends after finitely many collisions.
 !>
 !> Two ways to it. (1) Simulation: the outcome of a run is told by the engine's
-!> labelled answer (separated, a certified or bounded collapse, or undecided),
-!> never by a collision count; a bisection locates the edge, and a fine scan of
+!> labelled answer (separated; a collapse proven in exact arithmetic; a merge
+!> whose collapse is unproven, at tolerance or bounded; or undecided), never
+!> by a collision count; a bisection locates the edge, and a fine scan of
 !> e around it gives its two ends, the band where the outcomes mix, and the
 !> digits each end earns (scan_edge, edge_of). (2) Rate map: the collisions of
 !> a run just below e_c repeat one pattern; over one period the gap rates of
@@ -21,7 +22,7 @@ module sphere_row_ecrit
     use, intrinsic :: iso_fortran_env, only: int8
     implicit none
     private
-    public :: outcome_finite, outcome_certified, outcome_bounded, outcome_undecided, n_outcomes
+    public :: outcome_finite, outcome_certified, outcome_unproven, outcome_undecided, n_outcomes
     public :: outcome_of, outcome_word, is_finite, outcome_changes
     public :: boundary_t, row_runner_t, runner_init, bisect_boundary, power_fit
     public :: collapse_cycle, group_map, char_poly, dominant_pair, dominant_is_real
@@ -33,11 +34,13 @@ module sphere_row_ecrit
     !> The run separated: it ended normally, no collapse limit taken, after
     !> finitely many collisions (its answer exact).
     integer, parameter :: outcome_finite = 1
-    !> A collapse limit was taken and every limit is exact or certified.
+    !> A collapse limit was taken and the collapse is proven in exact
+    !> arithmetic: every limit exact or certified, no collision passed over.
     integer, parameter :: outcome_certified = 2
-    !> A collapse limit was taken, at least one of them bounded (its group's
-    !> velocities are known within a bound, not proven to be a collapse).
-    integer, parameter :: outcome_bounded = 3
+    !> A limit was taken whose collapse is not proven: at tolerance (the
+    !> group's gaps and rates fell below tol, where a separation is not
+    !> excluded) or bounded (its velocities known within vtol).
+    integer, parameter :: outcome_unproven = 3
     !> No limit taken and the run did not separate: the work budget
     !> (max_collisions) was spent, or it ended at tolerance. Not decided.
     integer, parameter :: outcome_undecided = 4
@@ -125,7 +128,13 @@ module sphere_row_ecrit
         !> tell nothing more (measured with the defaults: p = 20 still decides
         !> its collapses at e = 0.690 and 0.697, p = 24 not at 0.725, 0.735).
         integer :: n_scan = 200, n_scan_long = 200, p_long = huge(1)
-        real(qp) :: tol_scan = 2.0e-34_qp
+        !> The scan's tolerance: deep (1e-300), so that a point is called
+        !> separated or certified from dynamics followed far below any rate a
+        !> question of collapse turns on, and a merge at tol (unproven) is rare;
+        !> from p_long on real(16)'s epsilon rounded up, at which a long row
+        !> keeps its calendar of impacts (its collapses are undecided within
+        !> max_collisions_scan whatever the tol: its scan tells separations).
+        real(qp) :: tol_scan = 1.0e-300_qp, tol_scan_long = 2.0e-34_qp
         integer :: max_collisions_scan = 100000
         real(qp) :: window = 2.0e-2_qp
         integer :: widen_max = 3
@@ -133,7 +142,7 @@ module sphere_row_ecrit
         !> at tol_scan and in real(16) at the deeper tol_deep: the band as a
         !> property of the row, not of the kind or the tolerance.
         integer :: robust_p_max = 10
-        real(qp) :: tol_deep = 1.0e-300_qp
+        real(qp) :: tol_deep = 1.0e-4000_qp
         !> Rows up to this p also get e_c from the rate map of their cycle.
         integer :: map_p_max = 6
         !> Longest collision pattern looked for as the collapse cycle.
@@ -181,19 +190,21 @@ module sphere_row_ecrit
     !> known to within and the decimals that width earns; the mixed band
     !> between them where they cross; the counts of each outcome.
     type :: edge_t
-        !> Highest point that collapsed (-1 if none) and lowest that separated
-        !> (2 if none); the interval [collapse_max, collapse_max + collapse_width]
-        !> holds the top of the collapse set on this grid (undecided points
-        !> above widen it), [finite_min - finite_width, finite_min] the bottom
-        !> of the separating set; decimals of each, from those widths.
+        !> Highest point whose collapse is proven (-1 if none) and lowest that
+        !> separated (2 if none); the interval [collapse_max, collapse_max +
+        !> collapse_width] holds the top of the proven collapse set on this grid
+        !> (unproven and undecided points above widen it), [finite_min -
+        !> finite_width, finite_min] the bottom of the separating set; decimals
+        !> of each, from those widths.
         real(qp) :: collapse_max = -1.0_qp, finite_min = 2.0_qp
         real(qp) :: collapse_width = 0.0_qp, finite_width = 0.0_qp
         integer :: collapse_digits = 0, finite_digits = 0
-        !> Highest point whose collapse is certified (no bounded limit; -1 if
-        !> none).
+        !> Highest point whose collapse is certified (-1 if none): collapse_max,
+        !> now that only a proven collapse counts as one.
         real(qp) :: certified_max = -1.0_qp
-        !> True if finite_min < collapse_max: outcomes mix over that band, of
-        !> band_points points, band_collapses of them collapses.
+        !> True if finite_min < collapse_max: a proven collapse above a
+        !> separation, outcomes mixing over that band of band_points points,
+        !> band_collapses of them proven collapses.
         logical :: mixed = .false.
         integer :: band_points = 0, band_collapses = 0
         !> Points of each outcome (outcome_* order) over the whole window.
@@ -270,7 +281,7 @@ contains
         end if
         do j = 1, top
             if (outcomes(j) == outcome_certified) row%b%e_certified = e_grid(j)
-            if (outcomes(j) == outcome_certified .or. outcomes(j) == outcome_bounded) then
+            if (outcomes(j) == outcome_certified .or. outcomes(j) == outcome_unproven) then
                 row%b%e_collapse = e_grid(j)
             end if
         end do
@@ -338,7 +349,8 @@ contains
     !> The scan of the edge: s%n_scan evenly spaced points (s%n_scan_long from
     !> p = s%p_long on) over a window
     !> centred on the bisected edge e_b with half-width s%window (1 - e_b),
-    !> each run in real(16) at s%tol_scan and decided by its labelled answer
+    !> each run in real(16) at s%tol_scan (s%tol_scan_long from p = s%p_long
+    !> on) and decided by its labelled answer
     !> (outcome_of). Where a separated point lies in the window's lowest tenth
     !> or a collapse in its highest, the band may reach past the window: its
     !> half-width doubles, at most s%widen_max times. Rows up to
@@ -356,15 +368,18 @@ contains
         n = s%n_scan
         if (p >= s%p_long) n = s%n_scan_long
         tenth = max(1, n/10)
-        call runner_init(runner, p, qp, s%tol_scan, s%max_collisions_scan)
+        if (p < s%p_long) then
+            call runner_init(runner, p, qp, s%tol_scan, s%max_collisions_scan)
+        else
+            call runner_init(runner, p, qp, s%tol_scan_long, s%max_collisions_scan)
+        end if
         do k = 0, s%widen_max
             row%widenings = k
             row%e_from = max(centre - half, 0.0_qp)
             row%e_to = min(centre + half, 0.5_qp*(1.0_qp + centre))
             call scan_points(runner, row%outcomes, row%decades)
             lowest = findloc(row%outcomes, outcome_finite, dim=1)
-            highest = max(findloc(row%outcomes, outcome_certified, dim=1, back=.true.), &
-                findloc(row%outcomes, outcome_bounded, dim=1, back=.true.))
+            highest = findloc(row%outcomes, outcome_certified, dim=1, back=.true.)
             if ((lowest == 0 .or. lowest > tenth) .and. highest <= n - tenth) exit
             if (row%e_from <= 0.0_qp) exit
             half = 2.0_qp*half
@@ -433,7 +448,7 @@ contains
         do k = 1, n_outcomes
             edge%counts(k) = count(outcomes == k)
         end do
-        collapse = outcomes == outcome_certified .or. outcomes == outcome_bounded
+        collapse = outcomes == outcome_certified
         i_c = findloc(collapse, .true., dim=1, back=.true.)
         i_f = findloc(outcomes, outcome_finite, dim=1)
         k = findloc(outcomes, outcome_certified, dim=1, back=.true.)
@@ -634,24 +649,29 @@ contains
     !> The outcome of a finished real(16) run (one of the outcome_* codes).
     pure integer function outcome_of_qp(run) result(outcome)
         type(run_t), intent(in) :: run
-        outcome = outcome_code(run%limits%n, run%limits%bounded, run%status, run%answer)
+        outcome = outcome_code(run%limits%n, run%limits%tolerance + run%limits%bounded, &
+            run%clock%passed, run%status, run%answer)
     end function outcome_of_qp
 
     !> The outcome of a finished real64 run.
     pure integer function outcome_of_dp(run) result(outcome)
         type(run_dp_t), intent(in) :: run
-        outcome = outcome_code(run%limits%n, run%limits%bounded, run%status, run%answer)
+        outcome = outcome_code(run%limits%n, run%limits%tolerance + run%limits%bounded, &
+            run%clock%passed, run%status, run%answer)
     end function outcome_of_dp
 
     !> The outcome told by a run's labelled answer: a collapse where a limit
-    !> was taken (bounded if any limit is), a separation where it ended
-    !> normally with an exact answer and no limit, else undecided (the budget
-    !> spent, or the rates fell below tol without a limit).
-    pure integer function outcome_code(collapses, bounded, status, answer) result(outcome)
-        integer, intent(in) :: collapses, bounded, status, answer
+    !> was taken (proven where no limit rests on tol or vtol and no collision
+    !> was passed over, else unproven), a separation where it ended normally
+    !> with an exact answer and no limit, else undecided (the budget spent,
+    !> or the rates fell below tol without a limit).
+    pure integer function outcome_code(collapses, unproven, passed, status, answer) &
+        result(outcome)
+        integer, intent(in) :: collapses, unproven, status, answer
+        logical, intent(in) :: passed
         if (collapses > 0) then
-            if (bounded > 0) then
-                outcome = outcome_bounded
+            if (unproven > 0 .or. passed) then
+                outcome = outcome_unproven
             else
                 outcome = outcome_certified
             end if
@@ -671,8 +691,8 @@ contains
             word = "separated"
         case (outcome_certified)
             word = "certified"
-        case (outcome_bounded)
-            word = "bounded"
+        case (outcome_unproven)
+            word = "unproven"
         case default
             word = "undecided"
         end select
@@ -730,7 +750,7 @@ contains
             real(qp), intent(in) :: e
             integer, intent(in) :: o
             if (o == outcome_certified) b%e_certified = max(b%e_certified, e)
-            if (o == outcome_certified .or. o == outcome_bounded) then
+            if (o == outcome_certified .or. o == outcome_unproven) then
                 b%e_collapse = max(b%e_collapse, e)
             end if
         end subroutine note
