@@ -236,7 +236,7 @@ test-times: test ## make test, then build/test-times.tsv: each test's seconds, s
 		build/test-times.tsv
 
 study: prereqs ## every task's tables and figures, answers.tsv and summary.md in results/
-	@$(MAKE) --no-print-directory $(RESULTS)/summary.md $(PNG) $(SVG)
+	@$(MAKE) --no-print-directory $(RESULTS)/summary.md $(PNG) $(SVG) $(ECRIT_REPLAY)
 
 tables: $(TABLES) ## the study's tables only
 

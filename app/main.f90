@@ -229,10 +229,10 @@ contains
     end function finite
 
     !> The answer, one quantity per line, collected by `out` (whose every
-    !> write is checked at its finish).
-    !> The answer: how it ended, how good it is (`answer` and `v_bound`, the
-    !> bound on the final velocities: `rounding` where it is exact or
-    !> certified), the collapse limits by kind, the groups still active if the
+    !> write is checked at its finish): how it ended, what holds in exact
+    !> arithmetic (`answer`, and `v_bound`, the largest bound on a final
+    !> velocity, the run's own rounding included), the collapse limits by kind
+    !> and whether the collapse is proven, the groups still active if the
     !> budget ran out, and the velocities (each with the digits its bound
     !> leaves), positions and gaps.
     subroutine write_run()
@@ -297,11 +297,10 @@ contains
     end subroutine write_run
 
     !> Lines `v<i> <v_i>`, each with the digits its bound leaves: every digit
-    !> of real(16) where it is 0 (exact or certified) or not finite, else the
+    !> of real(16) where it is 0 (no bound known) or not finite, else the
     !> digits down to the bound's leading one; a velocity below that decade
-    !> reads rounded there, as -1, 0 or 1 times its power of ten. A sphere's
-    !> bound is its own (run%v_bounds) where the run gives one, else the
-    !> run's, plus with precision=auto the certificate's bound of it.
+    !> reads rounded there, as -1, 0 or 1 times its power of ten (sphere_bound
+    !> gives each sphere's bound).
     subroutine write_velocities()
         real(qp) :: bound
         integer :: i, digits, place, q

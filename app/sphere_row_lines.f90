@@ -71,9 +71,9 @@ contains
             entry("separation_scale", "a row that separates far below v0 (answer exact): " &
             //"its largest final rate over v0"), &
             entry("active", "unresolved only: the groups still active, first-last sphere each"), &
-            entry("v<i>", "final velocity of sphere i = 1 ... p [V], with the digits its bound " &
-            //"leaves (every digit where the answer is exact or certified); 3E-02 or 0E-02: " &
-            //"a velocity rounded at its bound's decade"), &
+            entry("v<i>", "final velocity of sphere i = 1 ... p [V], down to the decade of " &
+            //"its own bound (its rounding included); 3E-02 or 0E-02: a velocity rounded at " &
+            //"its bound's decade"), &
             entry("x<i>", "position of sphere i at t_end [L], every digit of the kind"), &
             entry("y<i>", "gap i = 1 ... p-1 (between spheres i and i+1) at t_end [L]") &
             ]

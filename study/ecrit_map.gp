@@ -21,9 +21,12 @@ x(e, p) = (e - ef(p))/(1 - ef(p))
 from(p) = x(column("e_first[1]") - h(p)/2, p)
 to(p) = x(column("e_last[1]") + h(p)/2, p)
 colour(o) = o eq 'separated' ? 0x1f77b4 : o eq 'certified' ? 0xd62728 : o eq 'unproven' ? 0xff7f0e : 0x7f7f7f
-# what the map shows (rows, points, tolerances, budget), from ecrit_answers.tsv
-shows = system("awk -F'\t' '$1 == \"ecrit.rows\" { print $6 }' ".dir."/ecrit_answers.tsv")
-set title "C12 study e_{crit}(p): outcome of each scan point near the edge\n{/*0.8 ".shows."}"
+# what the map shows (rows, points, tolerances, budget), from ecrit_answers.tsv,
+# a line for each part of it
+shows = system("awk -F'\t' '$1 == \"ecrit.rows\" { gsub(/; /, \"\\n\", $6); gsub(/ in real/, \"\\nin real\", $6); gsub(/, max_collisions/, \"\\nmax_collisions\", $6); print $6 }' ".dir."/ecrit_answers.tsv")
+set label 1 "C12 study e_{crit}(p): outcome of each scan point near the edge" at screen 0.36, screen 0.97 center
+set label 2 shows at screen 0.36, screen 0.935 center font ',9' noenhanced
+set tmargin 8
 set xlabel "(e - e_f) / (1 - e_f),  e_f = lowest separated point of the row"
 set ylabel "number of spheres p"
 set grid

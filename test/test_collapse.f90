@@ -209,6 +209,8 @@ contains
         type(unittest_t), allocatable :: tests(:)
         tests = [ &
             new_unittest("light_middle_sphere", test_light_middle), &
+            new_unittest("labels_hold_near_the_edge", test_labels_near_edge), &
+            new_unittest("rounding_bound_holds", test_rounding_bound), &
             new_unittest("unresolved_bound_holds", test_unresolved_bound), &
             new_unittest("bounded_cascade_within_its_bound", test_bounded_cascade), &
             new_unittest("tolerance_end_within_its_bound", test_tolerance_end), &
@@ -234,6 +236,70 @@ contains
             new_unittest("quiet_cascade_matches_fallback", test_quiet_cascade) &
             ]
     end function collect_collapse
+
+    !> Rows near p = 5's edge that separate in exact arithmetic, far below tol
+    !> (the replay, tools/replay: after 1062 collisions at rates of 2.6e-106
+    !> v0, after 441 at 1.2e-49): at the default tol their gaps and rates
+    !> fall below tol first, and the run says so, merged at tolerance, no
+    !> limit certified (a merge of their sub-tol gaps as a touching block had
+    !> called them certified collapses); at tol = 1e-300 each separates, with
+    !> the replay's count and scale.
+    subroutine test_labels_near_edge(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(scene_t) :: scene
+        type(run_t) :: run
+        integer :: stat, i
+        character(len=200) :: msg
+        real(qp), parameter :: es(2) = [0.2593_qp, 0.260419_qp]
+        integer, parameter :: counts(2) = [1062, 441]
+        real(qp), parameter :: scales(2) = [2.6e-106_qp, 1.2e-49_qp]
+        do i = 1, size(es)
+            call scene_init(scene, stat, msg, p=5, e=es(i))
+            call simulate(scene, run)
+            call check(error, run%answer == answer_tolerance .and. run%limits%certified == 0 &
+                .and. run%limits%tolerance > 0, "e = "//str(es(i))//": answer " &
+                //answer_word(run%answer)//" with "//itoa(run%limits%certified)// &
+                " certified limits; expected a merge at tolerance and no certified limit")
+            if (allocated(error)) return
+            scene%tol = 1.0e-300_qp
+            call simulate(scene, run)
+            call check(error, run%status == status_normal .and. run%answer == answer_exact .and. &
+                run%n == counts(i) .and. abs(log10(maxval(abs(run%dy))/scales(i))) < 0.1_qp, &
+                "e = "//str(es(i))//" at tol 1e-300: "//itoa(run%n)//" collisions, scale "// &
+                str(maxval(abs(run%dy)))//"; the replay: "//itoa(counts(i))//" at "// &
+                str(scales(i)))
+            if (allocated(error)) return
+        end do
+    end subroutine test_labels_near_edge
+
+    !> The rounding bound holds and earns its digits: the definition's row at
+    !> e = 0.2 ends at rational velocities (its 13 collisions multiply and add
+    !> decimals of e = 1/5 and halves), 0.24974780416, 0.24993030144,
+    !> 0.2501074944 and 0.2502144 v0. Each computed velocity lies within its
+    !> sphere's bound of them, and the bound is below 1e-31 (some 500
+    !> roundings of the working precision: it adds each collision's at most).
+    !> The same for the definition's collapse at e = 0.1, every velocity 1/4.
+    subroutine test_rounding_bound(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(scene_t) :: scene
+        type(run_t) :: run
+        integer :: stat
+        character(len=200) :: msg
+        real(qp), parameter :: exact(4) = [0.24974780416_qp, 0.24993030144_qp, &
+            0.2501074944_qp, 0.2502144_qp]
+        call scene_init(scene, stat, msg, e=0.2_qp)
+        call simulate(scene, run)
+        call check(error, run%answer == answer_exact .and. all(abs(run%v - exact) <= &
+            run%v_bounds) .and. all(run%v_bounds > 0) .and. run%v_bound < 1.0e-31_qp, &
+            "e = 0.2: velocities "//str(maxval(abs(run%v - exact)))//" from the exact ones, "// &
+            "bounds "//str(minval(run%v_bounds))//" ... "//str(run%v_bound))
+        if (allocated(error)) return
+        scene%e = 0.1_qp
+        call simulate(scene, run)
+        call check(error, run%answer == answer_certified .and. all(abs(run%v - 0.25_qp) <= &
+            run%v_bounds) .and. run%v_bound < 1.0e-31_qp, "e = 0.1: velocities "// &
+            str(maxval(abs(run%v - 0.25_qp)))//" from 1/4, bound "//str(run%v_bound))
+    end subroutine test_rounding_bound
 
     !> A light sphere between two heavy ones shuttles with rates shrinking by
     !> about 1 - 2m/M per cycle; the cycle limit gives the common velocity

@@ -259,6 +259,7 @@ def check_output(out, err, events):
         return "nan, inf or *** in the output"
     lines = out.split(b"\n")[:-1]
     keys = set()
+    values = {}
     table = False
     for line in lines:
         if line.startswith(b"event\tkind\t"):
@@ -273,18 +274,29 @@ def check_output(out, err, events):
             return "malformed line: %r" % line[:200]
         key, val = line.split(b" ", 1)
         keys.add(key)
+        values[key] = val
         if re.match(rb"^(t_end|collapse_t|[xy]\d+)$", key) and not NUMBER.match(val):
             return "not a number: %r" % line[:200]
         if re.match(rb"^v\d+$", key) and not VELOCITY.match(val):
             return "not a velocity: %r" % line[:200]
-        if key == b"v_bound" and not (val == b"rounding" or NUMBER.match(val)):
-            return "v_bound neither rounding nor a number: %r" % line[:200]
+        if key == b"v_bound" and not NUMBER.match(val):
+            return "v_bound not a number: %r" % line[:200]
     for need in (b"collisions", b"t_end", b"status", b"precision", b"answer", b"v_bound",
                  b"v1", b"x1", b"y1"):
         if need not in keys:
             return "no line %s" % need.decode()
     if events and not table:
         return "events=yes without the event table"
+    # a label is a proof: limits say whether the collapse is proven, an
+    # unproven one how far the claim reaches, and a certified answer with
+    # limits proves the collapse
+    if b"collapses" in keys:
+        if values.get(b"collapse") not in (b"proven", b"unproven"):
+            return "collapse limits without a `collapse proven|unproven` line"
+        if values[b"collapse"] == b"unproven" and b"separation_not_excluded_below" not in keys:
+            return "collapse unproven without separation_not_excluded_below"
+        if values.get(b"answer") in (b"exact", b"certified") and values[b"collapse"] != b"proven":
+            return "answer %s with collapse unproven" % values[b"answer"].decode()
     return None
 
 

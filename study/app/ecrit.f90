@@ -155,11 +155,9 @@ contains
     !> ecrit.tsv: one row per p with the two ends of its edge (each with the
     !> width it is known to within and only the decimals that width earns),
     !> the mixed band, the counts of the scan, the rate map where there is
-    !> one (30 digits), the three fits of 1 - e_c, and the bisection's
-    !> bracket: the highest e it saw certified and the lowest it saw separate,
-    !> and the scan's highest certified and lowest separated points (20
-    !> digits: the points run, not estimates of e_c; tools/replay-ecrit runs
-    !> them again).
+    !> one (30 digits), the three fits of 1 - e_c, and the scan's highest
+    !> certified and lowest separated points (20 digits: the points run, not
+    !> estimates of e_c; tools/replay-ecrit runs them again).
     subroutine write_rows()
         integer :: j
         call open_table(out, "ecrit.tsv", "p"//tab//"e_collapse_max[1]"//tab// &
@@ -170,8 +168,7 @@ contains
             "finite_scale_decade"//tab//"window_from[1]"//tab//"window_to[1]"//tab// &
             "widenings"//tab//"e_crit_rate_map[1]"//tab//"closed_form"//tab// &
             "closed_form_value[1]"//tab//"fit_power[1]"//tab//"fit_c_over_p[1]"//tab// &
-            "fit_mcnamara_young[1]"//tab//"bisect_certified[1]"//tab// &
-            "bisect_separated[1]"//tab//"certified_point[1]"//tab//"separated_point[1]", &
+            "fit_mcnamara_young[1]"//tab//"certified_point[1]"//tab//"separated_point[1]", &
             unit, stat, msg)
         call stop_unless_normal(stat, msg)
         do j = 1, size(ps)
@@ -196,9 +193,7 @@ contains
                     r%form%found)//tab//fit_text(c_fit*p_real(j)**slope, n_large >= 2)//tab// &
                     fit_text(c_inverse/p_real(j), n_large >= 1)//tab// &
                     fit_text(1.0_qp - mcnamara_young_e(r%p, k_my), k_my > 0.0_qp)//tab// &
-                    optional_text(real_str(r%b%e_certified, 20), r%b%e_certified >= 0.0_qp) &
-                    //tab//optional_text(real_str(r%b%e_high, 20), r%b%e_high < 1.0_qp) &
-                    //tab//optional_text(real_str(g%certified_max, 20), g%certified_max >= 0.0_qp) &
+                    optional_text(real_str(g%certified_max, 20), g%certified_max >= 0.0_qp) &
                     //tab//optional_text(real_str(g%finite_min, 20), g%finite_min <= 1.0_qp)
             end associate
         end do
@@ -379,14 +374,6 @@ contains
         form = "no closed form found among tan^2(j pi/k) and roots of integer polynomials "// &
             "of degree <= 4 with small coefficients"
         if (rows(i)%form%found) form = "closed form found: "//trim(rows(i)%form%text)
-        if (rows(i)%b%e_certified >= 0.0_qp .and. rows(i)%b%e_high < 1.0_qp) then
-            call write_answer(unit, "ecrit.bracket_p"//itoa(p), real_str(rows(i)%b%e_high &
-                - rows(i)%b%e_certified, 2), "rate_map_inside", trim(merge("yes", "no ", &
-                rows(i)%b%e_certified < rows(i)%e_map .and. rows(i)%e_map < rows(i)%b%e_high)), &
-                "-", "width of the bisection's bracket at tol = "//real_str(s%tol, 2)//": a "// &
-                "point certified to collapse at e = "//real_str(rows(i)%b%e_certified, 20)// &
-                ", a point separated at e = "//real_str(rows(i)%b%e_high, 20))
-        end if
         if (check == "-") then
             associate (g => edges(i))
                 call write_answer(unit, "ecrit.p"//itoa(p), real_str(rows(i)%e_map, 30), &
