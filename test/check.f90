@@ -8,6 +8,7 @@ program check
     use test_auto, only: collect_auto
     use test_cli, only: collect_cli
     use test_front, only: collect_front
+    use test_limit_bounds, only: collect_limit_bounds
     implicit none
     integer :: passed, failed
     passed = 0
@@ -16,6 +17,7 @@ program check
     call run_tests("engine", collect_engine(), passed, failed)
     call run_tests("collapse", collect_collapse(), passed, failed)
     call run_tests("calendar", collect_calendar(), passed, failed)
+    call run_tests("limit_bounds", collect_limit_bounds(), passed, failed)
     call run_tests("auto", collect_auto(), passed, failed)
     call run_tests("front", collect_front(), passed, failed)
     call run_tests("cli", collect_cli(), passed, failed)
