@@ -8,7 +8,7 @@ program check
     use test_auto, only: collect_auto
     use test_cli, only: collect_cli
     use test_front, only: collect_front
-    use test_limit_bounds, only: collect_limit_bounds
+    use test_limits, only: collect_limits
     use test_replays, only: collect_replays
     implicit none
     integer :: passed, failed
@@ -18,7 +18,7 @@ program check
     call run_tests("engine", collect_engine(), passed, failed)
     call run_tests("collapse", collect_collapse(), passed, failed)
     call run_tests("calendar", collect_calendar(), passed, failed)
-    call run_tests("limit_bounds", collect_limit_bounds(), passed, failed)
+    call run_tests("limits", collect_limits(), passed, failed)
     call run_tests("replays", collect_replays(), passed, failed)
     call run_tests("auto", collect_auto(), passed, failed)
     call run_tests("front", collect_front(), passed, failed)

@@ -1,9 +1,10 @@
 !> Runs checked against the same scene run another way: the calendar of
-!> impacts against the scan of every gap, and a certified cycle limit against
-!> the collisions it stands for, stepped without the closed-form rules.
+!> impacts against the scan of every gap, and limits taken in closed form (a
+!> certified cycle, the plastic pool) against the collisions they stand for,
+!> stepped without the closed-form rules.
 module test_replays
     use sphere_row, only: qp, dp, scene_t, run_t, scene_dp_t, run_dp_t, event_log_dp_t, &
-        scene_init, simulate, str, itoa, answer_word
+        scene_init, simulate, str, itoa, answer_word, answer_exact
     use testsuite, only: error_t, unittest_t, new_unittest, check
     implicit none
     private
@@ -19,7 +20,9 @@ contains
         type(unittest_t), allocatable :: tests(:)
         tests = [ &
             new_unittest("calendar_removals_keep_the_scan_order", test_calendar_removals), &
-            new_unittest("cycle_refused_while_a_neighbour_may_strike", test_cycle_neighbour) &
+            new_unittest("cycle_refused_while_a_neighbour_may_strike", test_cycle_neighbour), &
+            new_unittest("cycle_refused_while_another_contact_closes", test_cycle_outside), &
+            new_unittest("plastic_pool_exact_as_its_replay", test_plastic_replay) &
             ]
     end function collect_replays
 
@@ -96,28 +99,85 @@ contains
     subroutine test_cycle_neighbour(error)
         type(error_t), allocatable, intent(out) :: error
         type(scene_t) :: scene
-        type(run_t) :: closed, stepped
+        type(run_t) :: closed
         integer :: stat
         character(len=200) :: msg
-        real(qp) :: apart
         call scene_init(scene, stat, msg, p=7, e=0.367_qp, &
             masses=[4.838_qp, 2.886_qp, 26.125_qp, 0.144_qp, 18.4_qp, 6.16_qp, 2.728_qp], &
             gaps=[0.369_qp, 0.0_qp, 0.312_qp, 0.3_qp, 0.372_qp, 0.0_qp])
-        call simulate(scene, closed)
-        scene%closed_form_limits = .false.
-        call simulate(scene, stepped)
+        call check_replay(scene, "cycle and neighbour", closed, error)
+    end subroutine test_cycle_neighbour
+
+    !> Five touching spheres, two light ones (0.048 and 0.033) ahead of three
+    !> heavy (6.6, 16 and 9.1), struck at t = 0 at e = 0.0913: all their
+    !> collisions are at one instant. After 23 of them spheres 1..3 repeat a
+    !> pattern whose limit is at that same instant, while contact 3 (spheres
+    !> 3 and 4) still closes at it: the limit may not be taken before that
+    !> strike. The run with its closed-form limits (36 collisions) must end
+    !> where its stepped replay (234) ends, velocities within the two bounds
+    !> (equal to the last bit here, measured); a cycle certified although
+    !> another contact closes before its accumulation time ends 1.6e-6 away.
+    subroutine test_cycle_outside(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(scene_t) :: scene
+        type(run_t) :: closed
+        integer :: stat
+        character(len=200) :: msg
+        call scene_init(scene, stat, msg, p=5, e=0.0913_qp, &
+            masses=[0.0479_qp, 0.0332_qp, 6.57_qp, 16.4_qp, 9.11_qp], &
+            gaps=[0.0_qp, 0.0_qp, 0.0_qp, 0.0_qp])
+        call check_replay(scene, "cycle and another contact", closed, error)
+    end subroutine test_cycle_outside
+
+    !> At e = 0 a cascade through touching spheres pools them (docs/collapse.md,
+    !> rule 1): sphere 1 of five (masses 0.5 to 2) strikes the touching
+    !> spheres 2..4, and the four merge at once into one block, which then
+    !> strikes sphere 5 and takes it in (a second limit). These limits are
+    !> exact: the answer says so, and the stepped replay, each plastic
+    !> collision of the cascades taken until the rates are insignificant
+    !> (1068 collisions), ends at the same velocities to within its bound.
+    subroutine test_plastic_replay(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(scene_t) :: scene
+        type(run_t) :: closed
+        integer :: stat
+        character(len=200) :: msg
+        call scene_init(scene, stat, msg, p=5, e=0.0_qp, &
+            masses=[1.0_qp, 0.5_qp, 2.0_qp, 1.5_qp, 0.7_qp], gaps=[1.0_qp, 0.0_qp, 0.0_qp, 1.0_qp])
+        call check_replay(scene, "plastic pool", closed, error)
+        if (allocated(error)) return
+        call check(error, closed%limits%n > 0 .and. closed%answer == answer_exact, &
+            "plastic pool: "//itoa(closed%limits%n)//" limits, answer " &
+            //answer_word(closed%answer))
+    end subroutine test_plastic_replay
+
+    !> Run `scene` with its closed-form limits (`closed`) and stepped without
+    !> them (every collapse taken by the fallback or the bounded cascade):
+    !> the same velocities to within the two runs' bounds and 64 roundings,
+    !> and the same end time to 1e-20 of it.
+    subroutine check_replay(scene, what, closed, error)
+        type(scene_t), intent(in) :: scene
+        character(len=*), intent(in) :: what
+        type(run_t), intent(inout) :: closed
+        type(error_t), allocatable, intent(out) :: error
+        type(scene_t) :: each
+        type(run_t) :: stepped
+        real(qp) :: apart
+        each = scene
+        call simulate(each, closed)
+        each%closed_form_limits = .false.
+        call simulate(each, stepped)
         call check(error, stepped%limits%n > 0 .and. stepped%limits%closed_form == 0, &
-            "cycle and neighbour: the stepped run took no limit, or one in closed form")
+            what//": the stepped run took no limit, or one in closed form")
         if (allocated(error)) return
         apart = maxval(abs(closed%v - stepped%v))
         call check(error, apart <= closed%v_bound + stepped%v_bound + 64*eps, &
-            "cycle and neighbour: velocities "//str(apart)//" apart (bounds " &
-            //str(closed%v_bound)//" and "//str(stepped%v_bound)//"; answers " &
-            //answer_word(closed%answer)//" after "//itoa(closed%n)//" collisions and " &
-            //answer_word(stepped%answer)//" after "//itoa(stepped%n)//")")
+            what//": velocities "//str(apart)//" apart (bounds "//str(closed%v_bound) &
+            //" and "//str(stepped%v_bound)//"; answers "//answer_word(closed%answer) &
+            //" after "//itoa(closed%n)//" collisions and "//answer_word(stepped%answer) &
+            //" after "//itoa(stepped%n)//")")
         call check(error, abs(closed%t_end - stepped%t_end) <= 1.0e-20_qp*stepped%t_end, &
-            "cycle and neighbour: end at "//str(closed%t_end)//", stepped to " &
-            //str(stepped%t_end))
-    end subroutine test_cycle_neighbour
+            what//": end at "//str(closed%t_end)//", stepped to "//str(stepped%t_end))
+    end subroutine check_replay
 
 end module test_replays
