@@ -4,7 +4,9 @@
 #                        prerequisites first): the quick suite, each test a few seconds
 #   make test-long       the same tests in their deep versions (more cases, longer runs)
 #   make test-times      make test, then build/test-times.tsv: every test's wall time
-#   make mutants         the mutation check: small bugs, each in a copy, must fail make test
+#   make mutants         the mutation check: small bugs, each in a copy, must fail make test;
+#                        MECHANICAL=relational,boundary,maxmin (or all) SAMPLE=20 SEED=1:
+#                        mutants drawn by rule instead, each group's kill rate (docs/testing.md)
 #   make differential    REV=... ARGS="n=2000": the same random rows by a revision and by
 #                        the working tree; every finite run must be the same, bit for bit
 #   make study           every task's tables, figures and results/summary.md
@@ -162,7 +164,8 @@ differential: prereqs ## the same random rows by REV (default HEAD) and the work
 	bash tools/differential $(or $(REV),HEAD) $(ARGS)
 
 mutants: prereqs ## the mutation check (tools/mutants): each small bug must fail make test
-	python3 tools/mutants
+	python3 tools/mutants $(if $(MECHANICAL),--mechanical $(MECHANICAL) --sample $(or $(SAMPLE),20) \
+		--seed $(or $(SEED),1))
 
 test-long: ## the tests in their deep versions (more random cases, longer runs; CI runs it)
 	@$(MAKE) --no-print-directory test TEST_ARGS=long
