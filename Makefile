@@ -7,7 +7,9 @@
 #   make replay          ARGS="p=5 e=0.2593": the independent high-precision replay of a
 #                        scene (tools/replay, mpmath): separated or collapsed, to 1e-300
 #   make test-times      make test, then build/test-times.tsv: every test's wall time
-#   make mutants         the mutation check: small bugs, each in a copy, must fail make test
+#   make mutants         the mutation check: small bugs, each in a copy, must fail make test;
+#                        MECHANICAL=relational,boundary,maxmin (or all) SAMPLE=20 SEED=1:
+#                        mutants drawn by rule instead, each group's kill rate (docs/testing.md)
 #   make differential    REV=... ARGS="n=2000": the same random rows by a revision and by
 #                        the working tree; every finite run must be the same, bit for bit
 #   make study           every task's tables, figures and results/summary.md
@@ -207,7 +209,8 @@ differential: prereqs ## the same random rows by REV (default HEAD) and the work
 	bash tools/differential $(or $(REV),HEAD) $(ARGS)
 
 mutants: prereqs ## the mutation check (tools/mutants): each small bug must fail make test
-	python3 tools/mutants
+	python3 tools/mutants $(if $(MECHANICAL),--mechanical $(MECHANICAL) --sample $(or $(SAMPLE),20) \
+		--seed $(or $(SEED),1))
 
 # test-long adds the near-edge rows against the replay (tools/replay-check:
 # 300 rows, a few minutes on 2 cores) and a last line that counts both

@@ -8,6 +8,8 @@ program check
     use test_auto, only: collect_auto
     use test_cli, only: collect_cli
     use test_front, only: collect_front
+    use test_limits, only: collect_limits
+    use test_replays, only: collect_replays
     implicit none
     integer :: passed, failed
     passed = 0
@@ -16,6 +18,8 @@ program check
     call run_tests("engine", collect_engine(), passed, failed)
     call run_tests("collapse", collect_collapse(), passed, failed)
     call run_tests("calendar", collect_calendar(), passed, failed)
+    call run_tests("limits", collect_limits(), passed, failed)
+    call run_tests("replays", collect_replays(), passed, failed)
     call run_tests("auto", collect_auto(), passed, failed)
     call run_tests("front", collect_front(), passed, failed)
     call run_tests("cli", collect_cli(), passed, failed)

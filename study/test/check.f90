@@ -3,6 +3,7 @@ program check
     use testsuite, only: run_tests, read_test_options
     use test_study, only: collect_study
     use test_monte_carlo, only: collect_monte_carlo
+    use test_mc_blocks, only: collect_mc_blocks
     use test_methods, only: collect_methods
     use test_ecrit, only: collect_ecrit
     use test_lean, only: collect_lean
@@ -17,6 +18,7 @@ program check
     call read_test_options(failed)
     call run_tests("study", collect_study(), passed, failed)
     call run_tests("monte_carlo", collect_monte_carlo(), passed, failed)
+    call run_tests("mc_blocks", collect_mc_blocks(), passed, failed)
     call run_tests("methods", collect_methods(), passed, failed)
     call run_tests("ecrit", collect_ecrit(), passed, failed)
     call run_tests("lean", collect_lean(), passed, failed)

@@ -3,7 +3,9 @@
 !>
 !> Each test's line gives its wall time (`make test-times` tabulates them). The
 !> driver's command line may hold `long`: the deep versions of the property
-!> tests, more cases and longer runs (`make test-long`).
+!> tests, more cases and longer runs (`make test-long`); and `fail-fast`: no
+!> test runs after the first that fails (the mutation check, tools/mutants,
+!> needs only to know whether one does).
 module testsuite
     use, intrinsic :: iso_fortran_env, only: output_unit, int64
     implicit none
@@ -13,6 +15,8 @@ module testsuite
 
     !> True when the driver was asked for the deep versions of the tests.
     logical, protected :: long_tests = .false.
+    !> True when the driver was asked to stop at the first failed test.
+    logical :: fail_fast = .false.
 
     !> A failed check: its message.
     type :: error_t
@@ -56,8 +60,9 @@ contains
         end if
     end subroutine check
 
-    !> Read the driver's command line: `long` asks for the deep tests; any
-    !> other argument fails the run (reported as one failed test).
+    !> Read the driver's command line: `long` asks for the deep tests,
+    !> `fail-fast` for no test after the first failure; any other argument
+    !> fails the run (reported as one failed test).
     subroutine read_test_options(failed)
         integer, intent(inout) :: failed
         integer :: i, n
@@ -66,10 +71,12 @@ contains
             call get_command_argument(i, arg, length=n)
             if (arg(:n) == "long") then
                 long_tests = .true.
+            else if (arg(:n) == "fail-fast") then
+                fail_fast = .true.
             else
                 failed = failed + 1
                 write (output_unit, "(a)") "FAIL testsuite: argument "//arg(:n)// &
-                    ": allowed only long"
+                    ": allowed long or fail-fast"
             end if
         end do
     end subroutine read_test_options
@@ -82,7 +89,7 @@ contains
     end function cases
 
     !> Run every test of a suite, print one line per test with its wall time,
-    !> add up the counts.
+    !> add up the counts (with fail-fast, none once a test has failed).
     subroutine run_tests(suite, tests, passed, failed)
         character(len=*), intent(in) :: suite
         type(unittest_t), intent(in) :: tests(:)
@@ -93,6 +100,7 @@ contains
         real :: seconds
         character(len=16) :: time_text
         do i = 1, size(tests)
+            if (fail_fast .and. failed > 0) return
             call system_clock(t0, rate)
             call tests(i)%test(error)
             call system_clock(t1)

@@ -1,0 +1,258 @@
+!> Tests of the collapse limits a run takes, watched by an observer that sees
+!> the state before and after each: the bound the run reports for the limits
+!> it took by pooling (the fallback and the bounded cascade), against what
+!> each limit's own argument requires; the gaps a limit closes at once; when
+!> the bounded cascade looks at its bound.
+!>
+!> A pooling moves the velocities u of spheres lo..hi+1 to their pools' c,
+!> keeping the group's momentum. Its argument (docs/collapse.md) puts the
+!> velocities the group would have reached within d of c, d = ||u - c|| in the
+!> kinetic-energy metric: the cone bound for a cascade at one instant, the
+!> energy bound (d = sqrt(2E), every sphere at the mean) for the fallback.
+!> The end spheres of a block can move alone without leaving the cone of
+!> non-approaching velocities (the first down, the last up), so any bound
+!> drawn from that argument covers c_lo - d/sqrt(m_lo) and
+!> c_(hi+1) + d/sqrt(m_(hi+1)): it is at least d/sqrt(min(m_lo, m_(hi+1))).
+!> The bound tests check that lower bound, limit by limit, against the
+!> v_bound the run ends with, which must cover every limit it took.
+module test_limits
+    use sphere_row, only: qp, scene_t, run_t, observer_t, scene_init, simulate, str, itoa, &
+        event_collision, event_collapse, state_now
+    use testsuite, only: error_t, unittest_t, new_unittest, check
+    implicit none
+    private
+    public :: collect_limits
+
+    !> Unit roundoff of the working precision: the bound and the lower bound
+    !> here are two roundings of one sum, a few eps apart.
+    real(qp), parameter :: eps = epsilon(1.0_qp)
+
+    !> Watches a run and keeps, for every limit, its spheres, the lower bound
+    !> d/sqrt(min(m_lo, m_(hi+1))) its bound must reach if it pools them, and
+    !> the widest gap among them that it closed at the instant of the
+    !> collision before it.
+    type, extends(observer_t) :: pooling_watch_t
+        !> The scene's masses.
+        real(qp), allocatable :: m(:)
+        !> The gaps and rates just after the latest collision, the state a rule
+        !> looked at, and its time.
+        real(qp), allocatable :: y(:), dy(:)
+        real(qp) :: t = 0.0_qp
+        !> Limits seen, and for each its first and last sphere, lower bound and
+        !> widest gap closed at once (0 for a limit after a further time).
+        integer :: n = 0
+        integer, allocatable :: first(:), last(:)
+        real(qp), allocatable :: lower(:), closed(:)
+    contains
+        procedure :: notify => watch_notify
+    end type pooling_watch_t
+
+contains
+
+    !> The tests of the bounds of pooled limits.
+    function collect_limits() result(tests)
+        type(unittest_t), allocatable :: tests(:)
+        tests = [ &
+            new_unittest("v_bound_covers_the_largest_limit", test_largest_limit), &
+            new_unittest("bounded_cascade_covers_its_light_end", test_light_end), &
+            new_unittest("fallback_covers_its_light_end", test_fallback_group), &
+            new_unittest("limit_closes_no_open_gap", test_open_gap), &
+            new_unittest("bounded_cascade_looks_again", test_looks_again) &
+            ]
+    end function collect_limits
+
+    !> Keep the state after each collision; at each limit, the distance d the
+    !> limit moved spheres first..last (each state taken about the group's
+    !> momentum-weighted mean, which the limit keeps), d/sqrt of the lighter
+    !> end mass, and, if the limit is at the collision's instant, the widest
+    !> of the group's gaps before it.
+    subroutine watch_notify(self, run, kind, first, last, w)
+        class(pooling_watch_t), intent(inout) :: self
+        type(run_t), intent(in) :: run
+        integer, intent(in) :: kind, first, last
+        real(qp), intent(in) :: w
+        real(qp) :: u(first:last), c(first:last), mass, d, x1
+        integer :: j
+        if (kind == event_collision) then
+            call state_now(run, self%y, x1)
+            self%dy = run%dy
+            self%t = run%t_end
+            return
+        end if
+        if (kind /= event_collapse) return
+        u(first) = 0.0_qp
+        c(first) = 0.0_qp
+        do j = first, last - 1
+            u(j + 1) = u(j) + self%dy(j)
+            c(j + 1) = c(j) + run%dy(j)
+        end do
+        associate (m => self%m(first:last))
+            mass = sum(m)
+            u = u - sum(m*u)/mass
+            c = c - sum(m*c)/mass
+            d = sqrt(sum(m*(u - c)**2))
+        end associate
+        self%n = self%n + 1
+        self%first = [self%first, first]
+        self%last = [self%last, last]
+        self%lower = [self%lower, d/sqrt(min(self%m(first), self%m(last)))]
+        self%closed = [self%closed, merge(maxval(self%y(first:last - 1)), 0.0_qp, &
+            run%t_end == self%t)]
+    end subroutine watch_notify
+
+    !> Run `scene` with a fresh watch.
+    subroutine watched_run(scene, run, watch)
+        type(scene_t), intent(in) :: scene
+        type(run_t), intent(inout) :: run
+        type(pooling_watch_t), intent(out) :: watch
+        watch%m = scene%m
+        allocate (watch%y(scene%p - 1), watch%dy(scene%p - 1), watch%first(0), watch%last(0), &
+            watch%lower(0), watch%closed(0))
+        call simulate(scene, run, observer=watch)
+    end subroutine watched_run
+
+    !> Sphere 1 strikes a touching block of five spheres (masses over two
+    !> decades) that then strikes a second block of six; the closed-form
+    !> rules are off and vtol = 1e-3, so every limit is a cascade at one
+    !> instant taken bounded when its cone bound falls within vtol (or the
+    !> fallback's). The run takes three limits: the first block's (d/sqrt(m)
+    !> about 1e-18), the struck second block's (about 9e-4) and a last one
+    !> (about 3e-5): v_bound must cover the largest, not the last.
+    subroutine test_largest_limit(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(scene_t) :: scene
+        type(run_t) :: run
+        type(pooling_watch_t) :: watch
+        integer :: stat, big
+        character(len=200) :: msg
+        call scene_init(scene, stat, msg, p=12, e=0.25_qp, &
+            masses=[1.0_qp, 3.0_qp, 0.05_qp, 2.0_qp, 0.3_qp, 5.0_qp, 4.0_qp, 0.1_qp, 1.5_qp, &
+            0.02_qp, 2.5_qp, 1.0_qp], &
+            gaps=[1.0_qp, 0.0_qp, 0.0_qp, 0.0_qp, 0.0_qp, 1.0_qp, 0.0_qp, 0.0_qp, 0.0_qp, &
+            0.0_qp, 0.0_qp])
+        scene%closed_form_limits = .false.
+        scene%vtol = 1.0e-3_qp
+        call watched_run(scene, run, watch)
+        call check(error, watch%n >= 2, "several limits: "//itoa(watch%n)//" taken")
+        if (allocated(error)) return
+        big = maxloc(watch%lower, 1)
+        ! the scene is one where the largest bound comes before a smaller last one
+        call check(error, big < watch%n .and. watch%lower(big) > 10*watch%lower(watch%n), &
+            "several limits: the largest lower bound "//str(watch%lower(big))// &
+            " is not ahead of a last one ten times smaller ("//str(watch%lower(watch%n))//")")
+        call check(error, run%v_bound >= watch%lower(big)*(1 - 64*eps), &
+            "several limits: v_bound "//str(run%v_bound)//" below the lower bound " &
+            //str(watch%lower(big))//" of limit "//itoa(big)//" of "//itoa(watch%n) &
+            //" (spheres "//itoa(watch%first(big))//"-"//itoa(watch%last(big))//")")
+    end subroutine test_largest_limit
+
+    !> A touching row struck at its left end, its last sphere the lightest
+    !> (masses 0.01 to 5), the closed-form rules off: its cascade at one
+    !> instant is taken as one bounded limit at its first look, after 4096
+    !> collisions, its cone bound then within vtol = 1e-3 (d/sqrt(m) of the
+    !> light end about 4e-18). That bound is the largest over the block's
+    !> spheres, so at least d/sqrt(0.01), twenty times d/sqrt(m) of the
+    !> heaviest sphere, to which the smallest of the spheres' bounds comes.
+    subroutine test_light_end(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(scene_t) :: scene
+        type(run_t) :: run
+        type(pooling_watch_t) :: watch
+        integer :: stat
+        character(len=200) :: msg
+        call scene_init(scene, stat, msg, p=7, e=0.3_qp, &
+            masses=[5.0_qp, 4.0_qp, 0.1_qp, 2.0_qp, 1.0_qp, 5.0_qp, 0.01_qp], &
+            gaps=[1.0_qp, 0.0_qp, 0.0_qp, 0.0_qp, 0.0_qp, 0.0_qp])
+        scene%closed_form_limits = .false.
+        scene%vtol = 1.0e-3_qp
+        call watched_run(scene, run, watch)
+        call check(error, watch%n >= 1, "light end: no limit taken")
+        if (allocated(error)) return
+        call check(error, run%v_bound >= maxval(watch%lower)*(1 - 64*eps), &
+            "light end: v_bound "//str(run%v_bound)//" below the lower bound " &
+            //str(maxval(watch%lower))//" of its limit")
+    end subroutine test_light_end
+
+    !> Six spheres (masses 0.15 to 8.8, the last three gaps closed) at
+    !> e = 0.37 with the closed-form rules and the bounded cascade off (vtol =
+    !> 0) and tol = 1e-10: the fallback alone takes its collapses (eight),
+    !> each once a group's gaps and rates are within tol, and the row then
+    !> separates, so that v_bound is its limits' alone (no cone bound of a
+    !> run's end is added). A fallback's bound, the energy bound sqrt(2E/m)
+    !> of the group's lightest sphere, is at least d/sqrt(m) of either end (d
+    !> = sqrt(2E): every sphere goes to the mean), here 1.9e-10 at the
+    !> largest; sqrt(2E/m) of the heaviest sphere is not (6e-11).
+    subroutine test_fallback_group(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(scene_t) :: scene
+        type(run_t) :: run
+        type(pooling_watch_t) :: watch
+        integer :: stat
+        character(len=200) :: msg
+        call scene_init(scene, stat, msg, p=6, e=0.37_qp, &
+            masses=[0.23_qp, 0.15_qp, 0.23_qp, 0.35_qp, 8.8_qp, 0.16_qp], &
+            gaps=[1.0_qp, 1.0_qp, 0.0_qp, 0.0_qp, 0.0_qp], tol=1.0e-10_qp)
+        scene%closed_form_limits = .false.
+        scene%vtol = 0.0_qp
+        call watched_run(scene, run, watch)
+        call check(error, watch%n >= 2 .and. all(run%dy >= 0.0_qp), &
+            "fallback: "//itoa(watch%n)//" limits, or the row does not separate")
+        if (allocated(error)) return
+        call check(error, run%v_bound >= maxval(watch%lower)*(1 - 64*eps), &
+            "fallback: v_bound "//str(run%v_bound)//" below the lower bound " &
+            //str(maxval(watch%lower))//" of its limits")
+    end subroutine test_fallback_group
+
+    !> Three spheres at e = 0, the middle one heavy (masses 1, 1e4, 1), tol =
+    !> 1e-3: sphere 1 strikes sphere 2 and moves on with it, at one velocity,
+    !> closing on sphere 3 at 1e-4 v0, a rate below tol v0 that ends the run.
+    !> Gap 2 is still 1 (of the scene's 1), not closed: no limit may pool
+    !> sphere 3 with the others. Every limit a run takes at the instant of a
+    !> collision (the plastic pool, a touching block, the fallback, the
+    !> bounded cascade) closes only gaps within tol max(a) of closed; only a
+    !> cycle's limit, after its further time, closes open ones.
+    subroutine test_open_gap(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(scene_t) :: scene
+        type(run_t) :: run
+        type(pooling_watch_t) :: watch
+        integer :: stat, j
+        character(len=200) :: msg
+        call scene_init(scene, stat, msg, p=3, e=0.0_qp, masses=[1.0_qp, 1.0e4_qp, 1.0_qp], &
+            tol=1.0e-3_qp)
+        call watched_run(scene, run, watch)
+        if (watch%n == 0) return
+        j = maxloc(watch%closed, 1)
+        call check(error, watch%closed(j) <= scene%tol*maxval(scene%a), &
+            "open gap: a limit at a collision's instant closed a gap of " &
+            //str(watch%closed(j))//" (spheres "//itoa(watch%first(j))//"-" &
+            //itoa(watch%last(j))//")")
+    end subroutine test_open_gap
+
+    !> A touching row of 20 equal spheres struck at one end, the closed-form
+    !> rules off: its cascade at one instant is looked at by the bounded
+    !> cascade after 4096 collisions, then after 8192, 16384, ... With vtol
+    !> at a third of the bound b of the first look (2.1e-9), the cascade is
+    !> taken at the next look, after 8192 collisions (its bound then 1.9e-17,
+    !> measured), not stepped on to the fallback's insignificant rates (16,249
+    !> collisions).
+    subroutine test_looks_again(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(scene_t) :: scene
+        type(run_t) :: first, later
+        integer :: stat
+        character(len=200) :: msg
+        call scene_init(scene, stat, msg, p=20, e=0.5_qp, gaps=spread(0.0_qp, 1, 19))
+        scene%closed_form_limits = .false.
+        scene%vtol = 0.999_qp
+        call simulate(scene, first)
+        scene%vtol = first%v_bound/3
+        call simulate(scene, later)
+        call check(error, first%limits%n == 1 .and. later%limits%n == 1 .and. &
+            later%n > first%n .and. later%n <= 2*first%n .and. later%v_bound <= scene%vtol, &
+            "looks again: at vtol "//str(scene%vtol)//" taken after "//itoa(later%n) &
+            //" collisions with the bound "//str(later%v_bound)//"; at its first look after " &
+            //itoa(first%n))
+    end subroutine test_looks_again
+
+end module test_limits
