@@ -210,6 +210,8 @@ contains
         tests = [ &
             new_unittest("light_middle_sphere", test_light_middle), &
             new_unittest("labels_hold_near_the_edge", test_labels_near_edge), &
+            new_unittest("try_at_tol_proves_no_collapse", test_try_at_tol), &
+            new_unittest("label_of_a_pass_below_tol", test_pass_below_tol), &
             new_unittest("rounding_bound_holds", test_rounding_bound), &
             new_unittest("unresolved_bound_holds", test_unresolved_bound), &
             new_unittest("bounded_cascade_within_its_bound", test_bounded_cascade), &
@@ -271,6 +273,69 @@ contains
             if (allocated(error)) return
         end do
     end subroutine test_labels_near_edge
+
+    !> A touching block's try that steps the block until its rates fall below
+    !> tol (the try's quiet end) proves nothing below tol: the struck block
+    !> 3..6 of this row (sphere 3 of mass 712.3 between spheres near 1) is
+    !> merged after 12 collisions at tolerance, no limit certified, and the
+    !> collapse unproven; in exact arithmetic the row separates (the replay,
+    !> tools/replay: after 604 collisions), as the run at tol = 1e-300 does,
+    !> with the replay's count.
+    subroutine test_try_at_tol(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(scene_t) :: scene
+        type(run_t) :: run
+        integer :: stat
+        character(len=200) :: msg
+        call scene_init(scene, stat, msg, p=6, e=0.314286_qp, &
+            masses=[1.021_qp, 1.435_qp, 712.3_qp, 1.376_qp, 0.9328_qp, 1.115_qp], &
+            gaps=[1.302_qp, 0.8459_qp, 1.528_qp, 0.0_qp, 0.0_qp])
+        call simulate(scene, run)
+        call check(error, run%answer == answer_tolerance .and. run%limits%certified == 0 &
+            .and. run%limits%tolerance > 0 .and. run%status == status_collapsed, &
+            "answer "//answer_word(run%answer)//" with "//itoa(run%limits%certified)// &
+            " certified limits; expected a merge at tolerance and no certified limit")
+        if (allocated(error)) return
+        scene%tol = 1.0e-300_qp
+        call simulate(scene, run)
+        call check(error, run%status == status_normal .and. run%answer == answer_exact .and. &
+            run%n == 604, "at tol 1e-300: "//itoa(run%n)//" collisions, answer "// &
+            answer_word(run%answer)//"; the replay separates after 604")
+    end subroutine test_try_at_tol
+
+    !> A collision passed over because its pair closed slower than tol v0 is
+    !> one that exact arithmetic takes: a run that passed one rests on tol,
+    !> whatever its limits proved. Two rows near p = 8's edge with spheres of
+    !> unequal masses pass such collisions and take no limit at tolerance
+    !> (their limits are certified): run again at tol = 1e-60 they take more
+    !> collisions (1532 for 809, 833 for 503), so their answer cannot be one
+    !> that holds without tol; it is tolerance.
+    subroutine test_pass_below_tol(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(scene_t) :: scene
+        type(run_t) :: coarse, fine
+        integer :: stat, i
+        character(len=200) :: msg
+        real(qp), parameter :: es(2) = [0.427873_qp, 0.431267_qp]
+        real(qp), parameter :: masses(8, 2) = reshape([ &
+            67.09_qp, 1.965_qp, 1.002_qp, 1.569_qp, 1.526_qp, 1.79_qp, 1.805_qp, 1.102_qp, &
+            1.034_qp, 0.6691_qp, 0.3555_qp, 0.6543_qp, 0.794_qp, 0.002794_qp, 0.6175_qp, &
+            1.253_qp], [8, 2])
+        real(qp), parameter :: gaps(7, 2) = reshape([ &
+            1.046_qp, 1.121_qp, 1.486_qp, 0.0_qp, 0.03103_qp, 0.0_qp, 0.5512_qp, &
+            0.0_qp, 1.199_qp, 0.6832_qp, 0.675_qp, 1.975_qp, 0.0_qp, 1.594_qp], [7, 2])
+        do i = 1, size(es)
+            call scene_init(scene, stat, msg, p=8, e=es(i), masses=masses(:, i), gaps=gaps(:, i))
+            call simulate(scene, coarse)
+            scene%tol = 1.0e-60_qp
+            call simulate(scene, fine)
+            call check(error, fine%n > coarse%n .and. coarse%answer == answer_tolerance, &
+                "e = "//str(es(i))//": "//itoa(coarse%n)//" collisions, answer "// &
+                answer_word(coarse%answer)//"; at tol 1e-60 "//itoa(fine%n)// &
+                " collisions: expected more, and the first answer tolerance")
+            if (allocated(error)) return
+        end do
+    end subroutine test_pass_below_tol
 
     !> The rounding bound holds and earns its digits: the definition's row at
     !> e = 0.2 ends at rational velocities (its 13 collisions multiply and add
