@@ -3,7 +3,7 @@
 !> the same status, and final states equal to within the rounding of the two
 !> ways of moving a gap (at every step, or once from its own time).
 module test_calendar
-    use sphere_row, only: qp, scene_t, run_t, event_log_t, scene_init, simulate, &
+    use sphere_row, only: qp, scene_t, run_t, event_log_t, scene_init, simulate, str, &
         status_normal, status_collapsed, itoa
     use testsuite, only: error_t, unittest_t, new_unittest, check, seed_random, cases
     implicit none
@@ -30,7 +30,8 @@ contains
             new_unittest("random_rows_same_sequence", test_random_rows), &
             new_unittest("elastic_row_hands_on", test_elastic_row), &
             new_unittest("long_rows_same_answer", test_long_rows), &
-            new_unittest("tiny_tol_keeps_the_scan", test_tiny_tol) &
+            new_unittest("tiny_tol_keeps_the_scan", test_tiny_tol), &
+            new_unittest("clock_carries_the_exact_time", test_exact_clock) &
             ]
     end function collect_calendar
 
@@ -203,5 +204,35 @@ contains
         call check(error, run%cal%on .and. run%n == 115, &
             "tol = eps: the calendar runs, 115 collisions at e = 0.172")
     end subroutine test_tiny_tol
+
+    !> The calendar's clock is a pair t + t_lo that holds the sum of the
+    !> collision intervals exactly. In an elastic row of equal spheres each
+    !> collision hands v0 on exactly, and each interval is its gap: gaps
+    !> g_k = 1 + m_k 2^-112 (m_k from 1 to 1000, the last bit of real(16)
+    !> near 1) put the sum at 2000 + sum(m_k) 2^-112 after 2000 collisions,
+    !> which t alone (whose last place there is 2^-101) cannot hold and t + t_lo
+    !> must, to within far less than t's last place (the rounding of t_lo's
+    !> own additions; a clock without its low part is off by 0.46 of it). The
+    !> reference is formed exactly: t - 2000 and sum(m_k) 2^-112 are exact.
+    subroutine test_exact_clock(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(scene_t) :: scene
+        type(run_t) :: run
+        integer :: stat, k
+        character(len=200) :: msg
+        integer, parameter :: p = 2001
+        integer :: m(p - 1)
+        real(qp) :: off
+        m = [(mod(7919*k, 1000) + 1, k = 1, p - 1)]
+        call scene_init(scene, stat, msg, p=p, e=1.0_qp, gaps=1 + scale(real(m, qp), -112))
+        scene%calendar_from = always
+        call simulate(scene, run)
+        off = ((run%clock%t - (p - 1)) - scale(real(sum(m), qp), -112)) + run%clock%t_lo
+        call check(error, run%cal%on .and. run%n == p - 1 .and. &
+            abs(off) < 1.0e-3_qp*spacing(run%clock%t), &
+            "t - 2000 = "//str(run%clock%t - (p - 1))//", t_lo = "//str(run%clock%t_lo)// &
+            ": the clock after "//itoa(run%n)//" collisions is off the sum of its gaps by "// &
+            itoa(nint(off/spacing(run%clock%t)*1000))//"/1000 of t's last place")
+    end subroutine test_exact_clock
 
 end module test_calendar
