@@ -185,7 +185,8 @@ contains
                     optional_text(real_str(real(g%band_collapses, qp)/max(1, g%band_points), 2), &
                     g%mixed)//tab//itoa(size(r%outcomes))//tab//itoa(g%counts(outcome_finite)) &
                     //tab//itoa(g%counts(outcome_certified))//tab// &
-                    itoa(g%counts(outcome_unproven))//tab//itoa(g%counts(outcome_undecided))//tab// &
+                    itoa(g%counts(outcome_unproven))//tab// &
+                    itoa(g%counts(outcome_undecided))//tab// &
                     optional_text(itoa(g%finite_decade), g%finite_min <= 1.0_qp)//tab// &
                     grid_text(r, r%e_from)//tab//grid_text(r, r%e_to)//tab//itoa(r%widenings) &
                     //tab//optional_text(real_str(r%e_map, 30), r%has_map)//tab// &
