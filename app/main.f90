@@ -4,7 +4,7 @@ program sphere_row_main
     use sphere_row, only: qp, dp, scene_t, run_t, event_log_t, simulate, status_word, &
         status_invalid, status_normal, event_collision, event_collapse, itoa, auto_t, &
         simulate_auto, simulate_in_dp, answer_word, answer_certified, answer_unresolved, &
-        answer_exact, real_str
+        answer_exact, real_str, collapse_proven
     use sphere_row_cli, only: cli_t, read_command_line, fail
     use sphere_row_scene_keys, only: add_scene_keys, scene_from_cli, check_scene_in_dp
     use sphere_row_error, only: error_t, fatal_error
@@ -349,14 +349,6 @@ contains
             if (allocated(auto%v_bounds)) bound = min(bound, auto%v_bounds(i))
         end if
     end function sphere_bound
-
-    !> The run took collapse limits, each proven in exact arithmetic (exact
-    !> or certified), and passed over no collision below tol.
-    pure logical function collapse_proven(r)
-        type(run_t), intent(in) :: r
-        collapse_proven = r%limits%n > 0 .and. r%limits%tolerance == 0 .and. &
-            r%limits%bounded == 0 .and. .not. r%clock%passed
-    end function collapse_proven
 
     !> floor(log10(x)) of x > 0: from real(8)'s log10 where x is in its range
     !> and the logarithm is not within 1e-9 of an integer (its rounding, about

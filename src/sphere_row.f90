@@ -19,27 +19,31 @@ module sphere_row
         scene_check_qp => scene_check_wp, simulate_qp => simulate_wp, &
         gaps_at_qp => gaps_at_wp, kinetic_energy_qp => kinetic_energy_wp, &
         momentum_qp => momentum_wp, str_qp => str_wp, bounds_t, &
-        simulate_certified_qp => simulate_certified_wp, budget_qp => budget_wp
+        simulate_certified_qp => simulate_certified_wp, budget_qp => budget_wp, &
+        collapse_proven_qp => collapse_proven_wp
 #ifdef SPHERE_ROW_XDP
     use sphere_row_engine_xdp, only: scene_xdp_t => scene_t, run_xdp_t => run_t, &
         event_log_xdp_t => event_log_t, scene_init_xdp => scene_init_wp, &
         scene_check_xdp => scene_check_wp, simulate_xdp => simulate_wp, &
         gaps_at_xdp => gaps_at_wp, kinetic_energy_xdp => kinetic_energy_wp, &
         momentum_xdp => momentum_wp, str_xdp => str_wp, bounds_xdp_t => bounds_t, &
-        simulate_certified_xdp => simulate_certified_wp, budget_xdp => budget_wp
+        simulate_certified_xdp => simulate_certified_wp, budget_xdp => budget_wp, &
+        collapse_proven_xdp => collapse_proven_wp
 #endif
     use sphere_row_engine_dp, only: scene_dp_t => scene_t, run_dp_t => run_t, &
         event_log_dp_t => event_log_t, scene_init_dp => scene_init_wp, &
         scene_check_dp => scene_check_wp, simulate_dp => simulate_wp, &
         gaps_at_dp => gaps_at_wp, kinetic_energy_dp => kinetic_energy_wp, &
         momentum_dp => momentum_wp, str_dp => str_wp, bounds_dp_t => bounds_t, &
-        simulate_certified_dp => simulate_certified_wp, budget_dp => budget_wp
+        simulate_certified_dp => simulate_certified_wp, budget_dp => budget_wp, &
+        collapse_proven_dp => collapse_proven_wp
     use sphere_row_engine_sp, only: scene_sp_t => scene_t, run_sp_t => run_t, &
         event_log_sp_t => event_log_t, scene_init_sp => scene_init_wp, &
         scene_check_sp => scene_check_wp, simulate_sp => simulate_wp, &
         gaps_at_sp => gaps_at_wp, kinetic_energy_sp => kinetic_energy_wp, &
         momentum_sp => momentum_wp, str_sp => str_wp, bounds_sp_t => bounds_t, &
-        simulate_certified_sp => simulate_certified_wp, budget_sp => budget_wp
+        simulate_certified_sp => simulate_certified_wp, budget_sp => budget_wp, &
+        collapse_proven_sp => collapse_proven_wp
     use sphere_row_auto, only: auto_t, simulate_auto, simulate_in_dp
     implicit none
     private
@@ -58,7 +62,7 @@ module sphere_row
     public :: scene_sp_t, run_sp_t, event_log_sp_t
     public :: scene_init, scene_check, simulate, gaps_at, kinetic_energy, momentum, str, budget
     public :: bounds_t, bounds_dp_t, bounds_sp_t, simulate_certified, auto_t, simulate_auto
-    public :: simulate_in_dp
+    public :: simulate_in_dp, collapse_proven
 #ifdef SPHERE_ROW_XDP
     public :: bounds_xdp_t
 #endif
@@ -128,6 +132,15 @@ module sphere_row
         module procedure budget_xdp
 #endif
     end interface budget
+
+    !> Whether a finished run's collapse is proven in exact arithmetic: limits
+    !> taken, each exact or certified, and no collision passed over below tol.
+    interface collapse_proven
+        module procedure collapse_proven_qp, collapse_proven_dp, collapse_proven_sp
+#ifdef SPHERE_ROW_XDP
+        module procedure collapse_proven_xdp
+#endif
+    end interface collapse_proven
 
     !> Text form of a real with every significant digit of its kind.
     interface str

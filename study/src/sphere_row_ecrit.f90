@@ -17,7 +17,7 @@
 !> the kind.
 module sphere_row_ecrit
     use sphere_row, only: dp, qp, itoa, scene_t, run_t, event_log_t, scene_dp_t, run_dp_t, &
-        simulate, status_normal, status_invalid, answer_exact
+        simulate, status_normal, status_invalid, answer_exact, collapse_proven
     use sphere_row_analysis, only: rate_map, sequence_of
     use, intrinsic :: iso_fortran_env, only: int8
     implicit none
@@ -199,8 +199,9 @@ module sphere_row_ecrit
         real(qp) :: collapse_max = -1.0_qp, finite_min = 2.0_qp
         real(qp) :: collapse_width = 0.0_qp, finite_width = 0.0_qp
         integer :: collapse_digits = 0, finite_digits = 0
-        !> Highest point whose collapse is certified (-1 if none): collapse_max,
-        !> now that only a proven collapse counts as one.
+        !> Highest point whose collapse is certified (-1 if none): the same point
+        !> as collapse_max (only a proven collapse counts as one), which the
+        !> table writes once at its width's decimals and once with one more.
         real(qp) :: certified_max = -1.0_qp
         !> True if finite_min < collapse_max: a proven collapse above a
         !> separation, outcomes mixing over that band of band_points points,
@@ -649,15 +650,13 @@ contains
     !> The outcome of a finished real(16) run (one of the outcome_* codes).
     pure integer function outcome_of_qp(run) result(outcome)
         type(run_t), intent(in) :: run
-        outcome = outcome_code(run%limits%n, run%limits%tolerance + run%limits%bounded, &
-            run%clock%passed, run%status, run%answer)
+        outcome = outcome_code(run%limits%n, collapse_proven(run), run%status, run%answer)
     end function outcome_of_qp
 
     !> The outcome of a finished real64 run.
     pure integer function outcome_of_dp(run) result(outcome)
         type(run_dp_t), intent(in) :: run
-        outcome = outcome_code(run%limits%n, run%limits%tolerance + run%limits%bounded, &
-            run%clock%passed, run%status, run%answer)
+        outcome = outcome_code(run%limits%n, collapse_proven(run), run%status, run%answer)
     end function outcome_of_dp
 
     !> The outcome told by a run's labelled answer: a collapse where a limit
@@ -665,15 +664,14 @@ contains
     !> was passed over, else unproven), a separation where it ended normally
     !> with an exact answer and no limit, else undecided (the budget spent,
     !> or the rates fell below tol without a limit).
-    pure integer function outcome_code(collapses, unproven, passed, status, answer) &
-        result(outcome)
-        integer, intent(in) :: collapses, unproven, status, answer
-        logical, intent(in) :: passed
+    pure integer function outcome_code(collapses, proven, status, answer) result(outcome)
+        integer, intent(in) :: collapses, status, answer
+        logical, intent(in) :: proven
         if (collapses > 0) then
-            if (unproven > 0 .or. passed) then
-                outcome = outcome_unproven
-            else
+            if (proven) then
                 outcome = outcome_certified
+            else
+                outcome = outcome_unproven
             end if
         else if (status == status_normal .and. answer == answer_exact) then
             outcome = outcome_finite
