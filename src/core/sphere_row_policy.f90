@@ -71,6 +71,15 @@ module sphere_row_policy
         !> Longest run of closed gaps tried (measured for speed: a try costs a
         !> few passes over the run).
         integer :: touch_run_most = 2048
+        !> The longest reference block (contacts) on which the box for struck
+        !> blocks of every length is grown (measured for speed: the search,
+        !> made once per e, costs about 100 looks per contact of the longest
+        !> block tried).
+        integer :: struck_reference_most = 4096
+        !> Times the box of every length is grown again and its bounds in
+        !> between joined, before a reference block twice as long is tried
+        !> (chosen: the joins settle within two or three where they settle).
+        integer :: struck_joins = 8
         !> Binary orders of magnitude between neighbouring contacts' reduced
         !> masses up to which the box uses the engine's order (derived: their
         !> ratio well inside double's range).
