@@ -4,7 +4,7 @@ program sphere_row_main
     use sphere_row, only: qp, dp, scene_t, run_t, event_log_t, simulate, status_word, &
         status_invalid, status_normal, event_collision, event_collapse, itoa, auto_t, &
         simulate_auto, simulate_in_dp, answer_word, answer_certified, answer_unresolved, &
-        answer_exact, real_str, collapse_proven
+        answer_exact, real_str, collapse_proven, sphere_row_version
     use sphere_row_cli, only: cli_t, read_command_line, fail
     use sphere_row_scene_keys, only: add_scene_keys, scene_from_cli, check_scene_in_dp
     use sphere_row_error, only: error_t, fatal_error
@@ -63,7 +63,8 @@ contains
     subroutine define_keys()
         character(len=*), parameter :: nl = new_line("a")
         cli%name = "sphere-row"
-        cli%synopsis = "[FILE] [key=value ...]"
+        cli%version = sphere_row_version
+        cli%synopsis = "[FILE] [key=value ...] | --help | --version"
         cli%about = &
             "Runs one row of spheres struck by sphere 1 (ARGESIM Comparison 12) in"//nl// &
             "real(16) and prints the number of collisions, the end time, the status, how"//nl// &

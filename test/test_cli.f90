@@ -24,7 +24,8 @@ contains
             new_unittest("event_table_file_never_partial", test_events_file_failures), &
             new_unittest("event_header_linear_in_p", test_events_long_row), &
             new_unittest("help", test_help), &
-            new_unittest("help_describes_output", test_help_output) &
+            new_unittest("help_describes_output", test_help_output), &
+            new_unittest("version_as_fpm_toml", test_version) &
             ]
     end function collect_cli
 
@@ -280,6 +281,28 @@ contains
         call check(error, index(out, "precision=qp") > 0 .and. &
             index(out, "allowed qp, dp or auto") > 0, "--help: the words of precision")
     end subroutine test_help
+
+    !> `--version` prints the name and the version fpm.toml states, exit 0,
+    !> nothing on stderr (among other arguments too).
+    subroutine test_version(error)
+        type(error_t), allocatable, intent(out) :: error
+        integer :: status, at
+        character(len=:), allocatable :: out, err, toml, version
+        toml = read_text("fpm.toml")
+        at = index(toml, nl//"version = """)
+        call check(error, at > 0, "fpm.toml states no version")
+        if (allocated(error)) return
+        version = toml(at + 12:)
+        version = version(:index(version, """") - 1)
+        call run_cli("--version", status, out, err)
+        call check(error, status == 0 .and. out == "sphere-row "//version//nl .and. &
+            len(err) == 0, "--version: status "//itoa_local(status)//", stdout '"//out &
+            //"', stderr '"//err//"', fpm.toml's version "//version)
+        if (allocated(error)) return
+        call run_cli("e=0.5 --version", status, out, err)
+        call check(error, status == 0 .and. out == "sphere-row "//version//nl, &
+            "e=0.5 --version: "//out//err)
+    end subroutine test_version
 
     function program_path_cached() result(path)
         character(len=:), allocatable :: path
