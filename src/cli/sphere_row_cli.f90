@@ -470,8 +470,9 @@ contains
                 cost = merge(0, 1, a(i:i) == b(j:j))
                 d(i, j) = min(d(i - 1, j) + 1, d(i, j - 1) + 1, d(i - 1, j - 1) + cost)
                 if (i > 1 .and. j > 1) then
-                    if (a(i:i) == b(j - 1:j - 1) .and. a(i - 1:i - 1) == b(j:j)) &
+                    if (a(i:i) == b(j - 1:j - 1) .and. a(i - 1:i - 1) == b(j:j)) then
                         d(i, j) = min(d(i, j), d(i - 2, j - 2) + 1)
+                    end if
                 end if
             end do
         end do
@@ -839,8 +840,8 @@ contains
     end subroutine command_args
 
     !> For programs: read the command line into `cli`; on `--help` print the
-    !> usage on stdout and stop (on `--version`, the name and version); on bad input, or help that cannot be
-    !> written, `fail`.
+    !> usage on stdout and stop (on `--version`, the name and version); on
+    !> bad input, or help that cannot be written, `fail`.
     subroutine read_command_line(cli)
         type(cli_t), intent(inout) :: cli
         type(string_t), allocatable :: args(:)
