@@ -98,11 +98,19 @@ B2 := $(RESULTS)/b2_velocities.tsv $(RESULTS)/b2_closed_forms.tsv $(RESULTS)/b2_
 C1 := $(RESULTS)/c1_iterations.tsv $(RESULTS)/c1_starts.tsv $(RESULTS)/c1_answers.tsv
 C2 := $(RESULTS)/c2_ecdf.tsv $(RESULTS)/c2_histogram.tsv $(RESULTS)/c2_convergence.tsv \
       $(RESULTS)/c2_answers.tsv
+# Timings live apart: every table and figure of results/ but those under
+# results/timing/ is the same on any machine; results/timing/ holds this
+# machine's measurements (the study programs' wall times, the methods' CPU
+# times and the platform, the survey's run times, the work-precision figure
+# drawn from them), tracked as the reference machine's, so that a `make study`
+# elsewhere changes nothing else (docs/testing.md: how check-docs reads them).
+TIMING := $(RESULTS)/timing
 METHODS := $(RESULTS)/methods_work_precision.tsv $(RESULTS)/methods_stability.tsv \
-      $(RESULTS)/methods_min_distance.tsv $(RESULTS)/methods_costs.tsv \
-      $(RESULTS)/methods_platform.tsv
+      $(RESULTS)/methods_min_distance.tsv $(TIMING)/methods_work_precision.tsv \
+      $(TIMING)/methods_costs.tsv $(TIMING)/methods_platform.tsv
 COLLAPSE := $(RESULTS)/collapse_survey.tsv $(RESULTS)/collapse_by_p.tsv \
-      $(RESULTS)/collapse_answers.tsv $(RESULTS)/collapse_unanswered.tsv
+      $(RESULTS)/collapse_answers.tsv $(RESULTS)/collapse_unanswered.tsv \
+      $(TIMING)/collapse_survey.tsv
 ECRIT := $(RESULTS)/ecrit.tsv $(RESULTS)/ecrit_answers.tsv $(RESULTS)/ecrit_map.tsv \
       $(RESULTS)/ecrit_robust.tsv
 # the full e_c(p) sweep (make ecrit-full): its keys, its last row, and the rows
@@ -132,9 +140,9 @@ SPACETIME_TABLES := $(foreach s,$(SPACETIME),$(foreach t,lines collisions collap
 
 FIGURES := a1_paths b1_n b1_critical b2_velocities c1_secant c2_ecdf c2_histogram collapse_by_p \
            c2_convergence ecrit ecrit_map
-PNG := $(FIGURES:%=$(RESULTS)/%.png) $(RESULTS)/methods_work_precision.png \
+PNG := $(FIGURES:%=$(RESULTS)/%.png) $(TIMING)/methods_work_precision.png \
        $(RESULTS)/methods_stability.png $(SPACETIME:%=$(RESULTS)/%.png)
-SVG := $(FIGURES:%=$(RESULTS)/%.svg) $(RESULTS)/methods_work_precision.svg \
+SVG := $(FIGURES:%=$(RESULTS)/%.svg) $(TIMING)/methods_work_precision.svg \
        $(RESULTS)/methods_stability.svg $(SPACETIME:%=$(RESULTS)/%.svg)
 
 .PHONY: all help prereqs replay install uninstall check-docs test-tools test test-long test-times mutants differential readme-commands test-mpi check-layers study tables \
@@ -306,11 +314,11 @@ $(MPI_STAMP): $(SOURCES) $(INC_STAMP)
 # run one study program, keeping its wall time apart from the tables; a third
 # argument is the command that runs it (default: the serial build's program)
 define study_run
-	@mkdir -p $(RESULTS)/timing
+	@mkdir -p $(TIMING)
 	@start=$$(date +%s.%N); $(or $(3),$(BIN)/$(1)) out=$(RESULTS) $(2); \
 	end=$$(date +%s.%N); \
 	awk -v s=$$start -v e=$$end -v p=$(1) 'BEGIN { printf "%s\t%.3f\n", p, e - s }' \
-		> $(RESULTS)/timing/$(1).tsv
+		> $(TIMING)/$(1).tsv
 endef
 
 $(A1) &: $(BUILD_STAMP)
@@ -400,9 +408,9 @@ examples: prereqs ## build and run every example program (example/); fails if on
 	echo "examples: $$ran ran, $$failed failed"; [ $$ran -gt 0 ] && [ $$failed -eq 0 ]
 
 # the methods' scripts write both formats in one run
-$(RESULTS)/methods_work_precision.png $(RESULTS)/methods_work_precision.svg &: \
+$(TIMING)/methods_work_precision.png $(TIMING)/methods_work_precision.svg &: \
 		study/work_precision.gp $(METHODS)
-	gnuplot -e "dir='$(RESULTS)'; out='$(RESULTS)/methods_work_precision'" $<
+	gnuplot -e "dir='$(RESULTS)'; out='$(TIMING)/methods_work_precision'" $<
 $(RESULTS)/methods_stability.png $(RESULTS)/methods_stability.svg &: \
 		study/stability_map.gp $(METHODS)
 	gnuplot -e "dir='$(RESULTS)'; out='$(RESULTS)/methods_stability'" $<

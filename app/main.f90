@@ -4,15 +4,15 @@ program sphere_row_main
     use sphere_row, only: qp, dp, scene_t, run_t, event_log_t, simulate, status_word, &
         status_invalid, status_normal, event_collision, event_collapse, itoa, auto_t, &
         simulate_auto, simulate_in_dp, answer_word, answer_certified, answer_unresolved, &
-        answer_exact, real_str, collapse_proven
+        answer_exact, real_str, collapse_proven, budget, sphere_row_version
     use sphere_row_cli, only: cli_t, read_command_line, fail
     use sphere_row_scene_keys, only: add_scene_keys, scene_from_cli, check_scene_in_dp
     use sphere_row_error, only: error_t, fatal_error
     use sphere_row_format, only: short_text, real_text, int_text, number_text_length
-    use sphere_row_read, only: printable
+    use sphere_row_read, only: printable, read_real
     use sphere_row_system, only: text_out_t, stderr_is_terminal, system_error_text, path_kind, &
         path_missing, path_regular
-    use sphere_row_watch, only: watch_t, event_header
+    use sphere_row_watch, only: watch_t, event_header, progress_on_terminal, progress_elsewhere
     use sphere_row_lines, only: output_help
     implicit none
     type(cli_t) :: cli
@@ -63,7 +63,8 @@ contains
     subroutine define_keys()
         character(len=*), parameter :: nl = new_line("a")
         cli%name = "sphere-row"
-        cli%synopsis = "[FILE] [key=value ...]"
+        cli%version = sphere_row_version
+        cli%synopsis = "[FILE] [key=value ...] | --help | --version"
         cli%about = &
             "Runs one row of spheres struck by sphere 1 (ARGESIM Comparison 12) in"//nl// &
             "real(16) and prints the number of collisions, the end time, the status, how"//nl// &
@@ -108,15 +109,21 @@ contains
     !> The watch of the run: the event table written row by row as the run
     !> goes, its header first, onto stdout or into its file (created here:
     !> a file that cannot be made is refused before the run); for a long row
-    !> a line on stderr that says what it costs (every row holds 2p + 6
-    !> numbers); progress lines on stderr when it is a terminal.
+    !> a note on stderr that says what it costs (every row holds 2p + 6
+    !> numbers); progress lines on stderr, fewer when it is not a terminal.
     subroutine start_watch(error)
         type(error_t), allocatable, intent(out) :: error
         real :: megabytes
         character(len=16) :: text
         integer :: errno, kind
         watch%events = events
-        watch%progress = stderr_is_terminal()
+        watch%progress = .true.
+        watch%progress_every = merge(progress_on_terminal, progress_elsewhere, &
+            stderr_is_terminal())
+        call progress_from_environment(error)
+        if (allocated(error)) return
+        watch%budget = budget(scene)
+        watch%v0 = scene%v0
         watch%out => out
         if (.not. events) return
         if (events_to_file) then
@@ -142,11 +149,37 @@ contains
         megabytes = real(2*scene%p + 6)*41.0/1.0e6
         if (megabytes < 1.0) return
         write (text, "(f0.1)") megabytes
-        write (error_unit, "(a)") "sphere-row: events = "//printable(events_word)//": every " &
-            //"event row holds "//itoa(2*scene%p + 6)//" numbers, about "//trim(text) &
-            //" MB; a row of "//itoa(scene%p)//" spheres has at least "//itoa(scene%p - 1) &
-            //" collisions"
+        write (error_unit, "(a)") "sphere-row: note (the run goes on): events = " &
+            //printable(events_word)//" writes "//itoa(2*scene%p + 6)//" numbers, about " &
+            //trim(text)//" MB, per event, and a row of "//itoa(scene%p)//" spheres has at " &
+            //"least "//itoa(scene%p - 1)//" collisions"
     end subroutine start_watch
+
+    !> SPHERE_ROW_PROGRESS=SECONDS in the environment sets the seconds
+    !> between progress lines (0: at every look at the clock; off: none).
+    subroutine progress_from_environment(error)
+        type(error_t), allocatable, intent(out) :: error
+        character(len=:), allocatable :: text
+        character(len=*), parameter :: name = "SPHERE_ROW_PROGRESS"
+        real(qp) :: seconds
+        integer :: length, stat
+        call get_environment_variable(name, length=length, status=stat)
+        if (stat /= 0) return
+        allocate (character(len=length) :: text)
+        if (length > 0) call get_environment_variable(name, text)
+        if (text == "off" .and. length == 3) then
+            watch%progress = .false.
+            return
+        end if
+        call read_real(name, text, seconds, error, "seconds >= 0 or off")
+        if (allocated(error)) return
+        if (seconds < 0 .or. seconds > 1.0e6_qp) then
+            call fatal_error(error, name//" = "//printable(text)//": allowed 0 <= seconds " &
+                //"<= 1e6 or off")
+            return
+        end if
+        watch%progress_every = real(seconds)
+    end subroutine progress_from_environment
 
     !> Run `sc` in the precision asked for.
     subroutine run_scene(sc, r, w)

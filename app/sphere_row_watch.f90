@@ -1,24 +1,31 @@
 !> What sphere-row watches of a run while it goes: the event table, written
 !> row by row as the events happen (constant memory, however long the run),
-!> and progress lines on stderr for a long run when stderr is a terminal.
+!> and progress lines on stderr for a long run: every few seconds on a
+!> terminal, now and then into a file or a pipe (a log of a long job).
 module sphere_row_watch
     use, intrinsic :: iso_fortran_env, only: error_unit, int64
-    use sphere_row, only: qp, run_t, observer_t, state_now, str, itoa, event_collision, &
-        event_collapse, real_text, int_text, number_text_length
+    use sphere_row, only: qp, run_t, observer_t, state_now, itoa, event_collision, &
+        event_collapse, real_text, int_text, number_text_length, real_str
     use sphere_row_system, only: text_out_t
     implicit none
     private
-    public :: watch_t, event_header
+    public :: watch_t, event_header, progress_on_terminal, progress_elsewhere
 
-    !> Seconds between progress lines, and the collisions between looks at
-    !> the clock (a look costs about as much as a collision).
-    real, parameter :: progress_every = 2.0
+    !> Seconds between progress lines on a terminal and elsewhere (a log
+    !> wants fewer), and the collisions between looks at the clock (a look
+    !> costs about as much as a collision).
+    real, parameter :: progress_on_terminal = 2.0, progress_elsewhere = 10.0
     integer, parameter :: look_every = 65536
 
     !> The observer of sphere-row: rows of the event table onto `out` (if
-    !> `events`), progress lines on stderr (if `progress`).
+    !> `events`), progress lines on stderr (if `progress`), every
+    !> `progress_every` seconds, against the run's work budget `budget` (in
+    !> collisions) and its speed v0.
     type, extends(observer_t) :: watch_t
         logical :: events = .false., progress = .false.
+        real :: progress_every = progress_on_terminal
+        integer :: budget = 0
+        real(qp) :: v0 = 1.0_qp
         type(text_out_t), pointer :: out => null()
         !> The first event whose row would hold a number beyond real(16) (0 if
         !> none): no row is written from it on.
@@ -123,11 +130,29 @@ contains
             self%last = now
             return
         end if
-        if (real(now - self%last)/real(rate) < progress_every) return
+        if (real(now - self%last)/real(rate) < self%progress_every) return
         self%last = now
-        write (error_unit, "(a)") "sphere-row: "//itoa(run%n)//" collisions, t = " &
-            //str(run%clock%t)//", "//itoa(int((now - self%started)/rate))//" s"
+        call write_progress(self, run, (now - self%started)/rate)
     end subroutine watch_notify
+
+    !> The progress line: the collisions against the work budget, the time
+    !> reached, and the fastest rate at which neighbours still close (the
+    !> run is over when none closes faster than tol v0; a budget spent first
+    !> ends it `unresolved`), then the wall seconds since the first look.
+    subroutine write_progress(self, run, seconds)
+        class(watch_t), intent(in) :: self
+        type(run_t), intent(in) :: run
+        integer(int64), intent(in) :: seconds
+        real(qp) :: closing
+        integer :: percent
+        closing = 0
+        if (size(run%dy) > 0) closing = max(0.0_qp, -minval(run%dy))/self%v0
+        percent = int(100.0_qp*real(run%n, qp)/real(max(self%budget, 1), qp))
+        write (error_unit, "(a)") "sphere-row: progress: "//itoa(run%n)//" of " &
+            //itoa(self%budget)//" collisions (max_collisions, "//itoa(percent)//" %), t = " &
+            //real_str(run%clock%t, 4)//", fastest closing rate "//real_str(closing, 2) &
+            //" v0, "//itoa(seconds)//" s"
+    end subroutine write_progress
 
     !> Append a field to the row (after a tab unless it is the first).
     subroutine watch_add_word(self, word)

@@ -63,6 +63,10 @@ module sphere_row
     public :: scene_init, scene_check, simulate, gaps_at, kinetic_energy, momentum, str, budget
     public :: bounds_t, bounds_dp_t, bounds_sp_t, simulate_certified, auto_t, simulate_auto
     public :: simulate_in_dp, collapse_proven
+    public :: sphere_row_version
+
+    !> The package's version, as fpm.toml states it (a test compares them).
+    character(len=*), parameter :: sphere_row_version = "0.1.0"
 #ifdef SPHERE_ROW_XDP
     public :: bounds_xdp_t
 #endif

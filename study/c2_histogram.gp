@@ -24,7 +24,16 @@ m = STATS_max
 stats answers using ((strcol(1) eq 'c2.e_sd') ? $4 : 1/0) nooutput
 s = STATS_max
 heading = sprintf('C12 task c2: histogram of v_4, e normal (m = %g, s = %g)', m, s)
-set title sprintf('%s, %d runs in real(16)', heading, n)
+# the precision of the runs, from the answers: precision=auto runs each in
+# real(8) under its rounding certificate and again in real(16) where it fails
+precision = 'qp'
+stats answers using ((strcol(1) eq 'c2.precision') ? (precision = strcol(2), 0) : 1/0) nooutput
+stats answers using ((strcol(1) eq 'c2.escalated') ? $2 : 1/0) nooutput
+escalated = int(STATS_max)
+runs = (precision eq 'auto') ? \
+    sprintf('%d runs: %d in real(8) under its rounding certificate, %d again in real(16)', \
+            n, n - escalated, escalated) : sprintf('%d runs in real(16)', n)
+set title heading."\n".runs
 set xlabel 'final velocity v_4 [v_0]'
 set ylabel 'probability density [1/v_0]'
 set key right top box opaque

@@ -12,6 +12,7 @@ set xlabel "number of spheres p"
 set ylabel "wall time per collision [ns]"
 set logscale xy
 set format x "10^{%L}"
+set format y "10^{%L}"
 set grid
 set key top left box opaque
 pick(row, search) = (strcol("row") eq row && strcol("search") eq search) ? column("ns_per_collision") : 1/0

@@ -27,8 +27,14 @@ shows = system("awk -F'\t' '$1 == \"ecrit.rows\" { gsub(/; /, \"\\n\", $6); gsub
 set label 1 "C12 study e_{crit}(p): outcome of each scan point near the edge" at screen 0.36, screen 0.97 center
 set label 2 shows at screen 0.36, screen 0.935 center font ',9' noenhanced
 set tmargin 8
-set xlabel "(e - e_f) / (1 - e_f),  e_f = lowest separated point of the row"
+set xlabel "(e - e_f) / (1 - e_f) [1],  e_f = lowest separated point of the row"
 set ylabel "number of spheres p"
+# p on a log axis: the short rows, each scanned in full up to p = 20, keep
+# room of their own beside the long ones
+stats m using (column("p")) nooutput
+set logscale y
+set yrange [STATS_min - 0.5:STATS_max + 0.5]
+set ytics (3, 4, 5, 6, 7, 8, 10, 12, 15, 20, 25, 30, 40, 50, 64, 80, 100, 128)
 set grid
 set key outside right top box opaque
 plot m using (strcol("scan") eq "real16" ? from(column("p")) : NaN):(column("p")):(to(column("p")) - from(column("p"))):(0):(colour(strcol("outcome"))) \

@@ -1,8 +1,10 @@
 # Work-precision chart of the methods compared (ARGESIM C12).
 #
-#   gnuplot -e "dir='results'; out='results/methods_work_precision'" study/work_precision.gp
+#   gnuplot -e "dir='results'; out='results/timing/methods_work_precision'" study/work_precision.gp
 #
-# reads  dir/methods_work_precision.tsv (written by c12-methods)
+# reads  dir/methods_work_precision.tsv (written by c12-methods: the errors) beside
+#        dir/timing/methods_work_precision.tsv (the same rows' CPU times, this
+#        machine's), joined row by row
 # writes out.png and out.svg: one panel per scene, CPU time per run against
 #        the largest error (velocities in v0, collision times in a/v0), log-log,
 #        one line per method through its settings. Filled symbols: the run has
@@ -11,8 +13,8 @@
 #        real128 against the real128 reference) is drawn at 1e-34.
 
 if (!exists("dir")) dir = "results"
-if (!exists("out")) out = dir."/methods_work_precision"
-file = dir."/methods_work_precision.tsv"
+if (!exists("out")) out = dir."/timing/methods_work_precision"
+file = "< paste '".dir."/methods_work_precision.tsv' '".dir."/timing/methods_work_precision.tsv'"
 
 set datafile separator "\t"
 set datafile missing "nan"
@@ -47,6 +49,11 @@ set style line 4 lc rgb "#7570b3" lw 2 pt 13 ps 1.2
 set style line 5 lc rgb "#e7298a" lw 2 pt 11 ps 1.2
 set style line 6 lc rgb "#a6761d" lw 2 pt 15 ps 1.2
 
+# each kind's label on its own side of its point: the kinds' points crowd
+# together where every kind ends at the same (wrong) count near e_c
+# (sp right, dp below, xdp left, qp above)
+kind_label = 'font ",9" tc rgb "#1b9e77"'
+
 set logscale xy
 set format x "10^{%L}"
 set format y "10^{%L}"
@@ -76,8 +83,14 @@ do for [fmt in "pngcairo svg"] {
         plot \
           file using (ended(i) && @is_engine ? err(column(c_error)) : NaN):(column(c_cpu)):\
             (symbol(7, 6)) with linespoints ls 1 pt variable, \
-          file using (ended(i) && @is_engine ? err(column(c_error)) : NaN):(column(c_cpu)):\
-            (strcol(c_kind)) with labels offset 0,1.1 font ",9" tc rgb "#1b9e77", \
+          file using (ended(i) && @is_engine && strcol(c_kind) eq "sp" ? err(column(c_error)) \
+            : NaN):(column(c_cpu)):(strcol(c_kind)) with labels offset 1.6,0 @kind_label, \
+          file using (ended(i) && @is_engine && strcol(c_kind) eq "dp" ? err(column(c_error)) \
+            : NaN):(column(c_cpu)):(strcol(c_kind)) with labels offset 0,-1.1 @kind_label, \
+          file using (ended(i) && @is_engine && strcol(c_kind) eq "xdp" ? err(column(c_error)) \
+            : NaN):(column(c_cpu)):(strcol(c_kind)) with labels offset -2.2,0 @kind_label, \
+          file using (ended(i) && @is_engine && strcol(c_kind) eq "qp" ? err(column(c_error)) \
+            : NaN):(column(c_cpu)):(strcol(c_kind)) with labels offset 0,1.1 @kind_label, \
           file using (ended(i) && @is_engine_tol ? err(column(c_error)) : NaN):(column(c_cpu)):\
             (symbol(9, 8)) with points ls 2 pt variable, \
           file using (ended(i) && @is_absolute ? err(column(c_error)) : NaN):(column(c_cpu)):\

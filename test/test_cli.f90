@@ -24,7 +24,9 @@ contains
             new_unittest("event_table_file_never_partial", test_events_file_failures), &
             new_unittest("event_header_linear_in_p", test_events_long_row), &
             new_unittest("help", test_help), &
-            new_unittest("help_describes_output", test_help_output) &
+            new_unittest("help_describes_output", test_help_output), &
+            new_unittest("version_as_fpm_toml", test_version), &
+            new_unittest("progress_without_terminal", test_progress) &
             ]
     end function collect_cli
 
@@ -233,6 +235,9 @@ contains
         call check(error, status == 0, "p=50000 events: status "//itoa_local(status)//": "//err)
         call check(error, seconds < 10.0, "p=50000 events: header and 3 rows took more than " &
             //"10 s")
+        ! what the rows cost is a note, not a refusal: it says so
+        call check(error, index(err, "sphere-row: note (the run goes on): events = ") == 1, &
+            "p=50000 events: the note on stderr reads: "//err)
         call execute_command_line("rm -f "//table_file)
     end subroutine test_events_long_row
 
@@ -280,6 +285,58 @@ contains
         call check(error, index(out, "precision=qp") > 0 .and. &
             index(out, "allowed qp, dp or auto") > 0, "--help: the words of precision")
     end subroutine test_help
+
+    !> `--version` prints the name and the version fpm.toml states, exit 0,
+    !> nothing on stderr (among other arguments too).
+    subroutine test_version(error)
+        type(error_t), allocatable, intent(out) :: error
+        integer :: status, at
+        character(len=:), allocatable :: out, err, toml, version
+        toml = read_text("fpm.toml")
+        at = index(toml, nl//"version = """)
+        call check(error, at > 0, "fpm.toml states no version")
+        if (allocated(error)) return
+        version = toml(at + 12:)
+        version = version(:index(version, """") - 1)
+        call run_cli("--version", status, out, err)
+        call check(error, status == 0 .and. out == "sphere-row "//version//nl .and. &
+            len(err) == 0, "--version: status "//itoa_local(status)//", stdout '"//out &
+            //"', stderr '"//err//"', fpm.toml's version "//version)
+        if (allocated(error)) return
+        call run_cli("e=0.5 --version", status, out, err)
+        call check(error, status == 0 .and. out == "sphere-row "//version//nl, &
+            "e=0.5 --version: "//out//err)
+    end subroutine test_version
+
+    !> A long run prints progress lines on stderr without a terminal too
+    !> (SPHERE_ROW_PROGRESS=0: at every look at the clock, each 65536
+    !> collisions), naming the budget and the fastest closing rate, and the
+    !> answer on stdout is that of the run without them.
+    subroutine test_progress(error)
+        type(error_t), allocatable, intent(out) :: error
+        character(len=*), parameter :: scene = "p=40 e=0.8 max_collisions=140000"
+        integer :: status
+        character(len=:), allocatable :: out, err, quiet
+        call run_cli(scene, status, quiet, err)
+        call check(error, status == 0 .and. len(err) == 0, scene//": "//err)
+        if (allocated(error)) return
+        call execute_command_line("SPHERE_ROW_PROGRESS=0 "//program_path_cached()//" " &
+            //scene//" > "//out_file//" 2> "//err_file, exitstat=status)
+        out = read_text(out_file)
+        err = read_text(err_file)
+        call check(error, status == 0 .and. out == quiet, "SPHERE_ROW_PROGRESS=0: status " &
+            //itoa_local(status)//", or stdout changed")
+        call check(error, index(err, "sphere-row: progress: 131072 of 140000 collisions " &
+            //"(max_collisions, 93 %), t = ") == 1 .and. index(err, ", fastest closing rate ") &
+            > 0 .and. count_lines(err) == 1, "the progress line: "//err)
+        if (allocated(error)) return
+        call execute_command_line("SPHERE_ROW_PROGRESS=x "//program_path_cached()//" " &
+            //scene//" > "//out_file//" 2> "//err_file, exitstat=status)
+        err = read_text(err_file)
+        call check(error, status == 2 .and. index(err, "sphere-row: SPHERE_ROW_PROGRESS = x: " &
+            //"not a number; allowed seconds >= 0 or off") == 1 .and. &
+            len(read_text(out_file)) == 0, "SPHERE_ROW_PROGRESS=x: "//err)
+    end subroutine test_progress
 
     function program_path_cached() result(path)
         character(len=:), allocatable :: path

@@ -211,7 +211,17 @@ contains
             //"ending in .tsv"
         rows = [ &
             bad("foo=1", 2, "foo = 1: unknown key; allowed keys: p, e,"), &
-            bad("E=0.5", 2, "E = 0.5: unknown key"), &
+            bad("E=0.5", 2, "E = 0.5: unknown key (did you mean e?); allowed keys: p, e,"), &
+            bad("mases=1,1,1,1", 2, "mases = 1,1,1,1: unknown key (did you mean masses?)"), &
+            bad("Max_Colisions=5", 2, "unknown key (did you mean max_collisions?)"), &
+            bad("x=1", 2, "x = 1: unknown key; allowed keys"), &
+            bad("e = 0.5", 2, "argument 'e = 0.5': the blanks around '=' split it into 3 " &
+            //"arguments; allowed key=value as one argument: e=0.5"), &
+            bad("p=6 e= 0.5", 2, "argument 'e= 0.5': the blanks around '=' split it into 2 " &
+            //"arguments; allowed key=value as one argument: e=0.5"), &
+            bad("e =0.5", 2, "argument 'e =0.5': the blanks around '=' split it into 2"), &
+            bad("e =", 2, "argument 'e =': the blanks around '=' split it into 2"), &
+            bad("--version=1", 2, "--version = 1: unknown key"), &
             bad("\se=0.5", 2, " e = 0.5: unknown key"), &
             bad("-e=0.5", 2, "-e = 0.5: unknown key"), &
             bad("=0.5", 2, "argument '=0.5': no key before '='"), &
@@ -262,6 +272,12 @@ contains
             bad("F/empty.nml", 2, "empty.nml': empty"), &
             bad("F/range.nml e=0.5", 2, "range.nml': e = 2: allowed 0 <= e <= 1"), &
             bad("F/gaps.nml a=2", 2, "a = 2: gaps = 1,2,3 is given too"), &
+            bad("F/gaps.nml p=3", 2, "gaps.nml': gaps = 1,2,3: 3 values given; allowed " &
+            //"exactly p-1 = 2"), &
+            bad("F/masses.nml", 2, "masses.nml': masses = 1,1,1: 3 values given; allowed " &
+            //"exactly p = 4 values"), &
+            bad("F/misspelt.nml", 2, "misspelt.nml': mases = 1,1,1,1: unknown key (did you " &
+            //"mean masses?)"), &
             bad("F/scale.nml", 2, "scale.nml': d = 1e4932: the row's length"), &
             bad("F", 2, "test_front': a directory; allowed a readable regular file") &
             ]
@@ -358,6 +374,8 @@ contains
         call write_file("empty.nml", "")
         call write_file("range.nml", "&scene e=2 /")
         call write_file("gaps.nml", "&scene gaps=1,2,3 /")
+        call write_file("masses.nml", "&scene masses=1,1,1 /")
+        call write_file("misspelt.nml", "&scene Mases=1,1,1,1 /")
         call write_file("scale.nml", "&scene d=1e4932 /")
         call write_file("binary.nml", "&scene e="//achar(0)//"0.5 /")
         call write_file("escape.nml", "&scene"//achar(27)//" e=0.5 /")

@@ -33,7 +33,7 @@ module sphere_row_cli
     use sphere_row_kinds, only: qp
     use sphere_row_format, only: itoa
     use sphere_row_error, only: error_t, fatal_error, error_output
-    use sphere_row_read, only: printable
+    use sphere_row_read, only: printable, lower
     use sphere_row_key, only: key_t, new_key, set_range, range_text, read_value, origin, &
         same_text, key_int, key_real, key_reals, key_flag, key_word, key_choice, key_table, &
         table_suffix
@@ -75,6 +75,11 @@ module sphere_row_cli
         logical :: files = .false.
         !> True after parse if `--help`, `-h` or `help` was given.
         logical :: help = .false.
+        !> The program's version, printed by `--version` (which a program
+        !> without one refuses as any other stray argument).
+        character(len=:), allocatable :: version
+        !> True after parse if `--version` was given to a program with one.
+        logical :: show_version = .false.
     contains
         !> Register a key taking an integer.
         procedure :: add_int => cli_add_int
@@ -268,10 +273,14 @@ contains
             call reset_value(this%keys(k))
         end do
         this%help = .false.
+        this%show_version = .false.
         do i = 1, size(args)
             if (is_help(args(i)%s)) this%help = .true.
+            if (args(i)%s == "--version" .and. allocated(this%version)) this%show_version = .true.
         end do
-        if (this%help) return
+        if (this%help .or. this%show_version) return
+        call check_split(args, error)
+        if (allocated(error)) return
         file = ""
         do i = 1, size(args)
             associate (arg => args(i)%s)
@@ -348,7 +357,8 @@ contains
         end if
         if (k == 0) then
             call fatal_error(error, printable(name)//" = "//printable(value) &
-                //": unknown key; allowed keys: "//cli%key_list())
+                //": unknown key"//did_you_mean(cli, name, .false.)//"; allowed keys: " &
+                //cli%key_list())
             return
         end if
         associate (key => cli%keys(k))
@@ -364,6 +374,110 @@ contains
             call read_value(key, "", error)
         end associate
     end subroutine take_argument
+
+    !> Refuse `key = value` written with blanks around `=`: the shell hands
+    !> it over as two or three arguments (`e`, `=`, `0.5`), of which the
+    !> bare key would be read as a scene file, so the refusal says what the
+    !> blanks did and the one argument meant.
+    subroutine check_split(args, error)
+        type(string_t), intent(in) :: args(:)
+        type(error_t), allocatable, intent(out) :: error
+        character(len=:), allocatable :: shown, meant
+        integer :: i, n
+        n = size(args)
+        do i = 1, n - 1
+            associate (a => args(i)%s, b => args(i + 1)%s)
+                if (b == "=" .and. len(b) == 1 .and. index(a, "=") == 0 .and. len(a) > 0) then
+                    ! key = value (three arguments), or key = at the end
+                    shown = a//" ="
+                    meant = a//"="
+                    if (i + 2 <= n) then
+                        shown = shown//" "//args(i + 2)%s
+                        meant = meant//args(i + 2)%s
+                    end if
+                else if (len(a) > 1 .and. index(a, "=") == len(a) .and. index(b, "=") == 0) then
+                    ! key= value
+                    shown = a//" "//b
+                    meant = a//b
+                else if (len(b) > 1 .and. index(b, "=") == 1 .and. index(a, "=") == 0 .and. &
+                         len(a) > 0) then
+                    ! key =value
+                    shown = a//" "//b
+                    meant = a//b
+                else
+                    cycle
+                end if
+            end associate
+            call fatal_error(error, "argument '"//printable(shown)//"': the blanks around " &
+                //"'=' split it into "//itoa(count_words(shown))//" arguments; allowed " &
+                //"key=value as one argument: "//printable(meant))
+            return
+        end do
+    contains
+        pure integer function count_words(text)
+            character(len=*), intent(in) :: text
+            integer :: j
+            count_words = 1
+            do j = 1, len(text)
+                if (text(j:j) == " ") count_words = count_words + 1
+            end do
+        end function count_words
+    end subroutine check_split
+
+    !> " (did you mean NAME?)" for the key of `cli` (only those a file may
+    !> set, with `in_file`) nearest to an unknown `name`: the same letters
+    !> in another case, or in names of three letters and more one letter
+    !> changed, left out, added or two swapped (two such in names of five
+    !> and more); "" if none.
+    pure function did_you_mean(cli, name, in_file) result(text)
+        type(cli_t), intent(in) :: cli
+        character(len=*), intent(in) :: name
+        logical, intent(in) :: in_file
+        character(len=:), allocatable :: text
+        integer :: k, best, distance, most
+        text = ""
+        best = 0
+        if (len(name) < 1) return
+        ! the largest distance taken; then the nearest key so far
+        most = 0
+        if (len(name) >= 3) most = 1
+        if (len(name) >= 5) most = 2
+        do k = 1, size(cli%keys)
+            if (in_file .and. .not. cli%keys(k)%in_file) cycle
+            distance = edit_distance(lower(name), lower(cli%keys(k)%name))
+            if (distance > most) cycle
+            if (best > 0 .and. distance >= most) cycle
+            best = k
+            most = distance
+        end do
+        if (best > 0) text = " (did you mean "//cli%keys(best)%name//"?)"
+    end function did_you_mean
+
+    !> The optimal string alignment distance of a and b: letters changed,
+    !> left out, added or two neighbours swapped, each counting one.
+    pure integer function edit_distance(a, b) result(dist)
+        character(len=*), intent(in) :: a, b
+        integer :: d(0:len(a), 0:len(b))
+        integer :: i, j, cost
+        do i = 0, len(a)
+            d(i, 0) = i
+        end do
+        do j = 0, len(b)
+            d(0, j) = j
+        end do
+        do j = 1, len(b)
+            do i = 1, len(a)
+                cost = merge(0, 1, a(i:i) == b(j:j))
+                d(i, j) = min(d(i - 1, j) + 1, d(i, j - 1) + 1, d(i - 1, j - 1) + cost)
+                if (i > 1 .and. j > 1) then
+                    if (a(i:i) == b(j - 1:j - 1) .and. a(i - 1:i - 1) == b(j:j)) then
+                        d(i, j) = min(d(i, j), d(i - 2, j - 2) + 1)
+                    end if
+                end if
+            end do
+        end do
+        dist = d(len(a), len(b))
+    end function edit_distance
 
     !> Refuse a key given together with a key it overrides.
     subroutine check_overrides(cli, error)
@@ -391,7 +505,11 @@ contains
         character(len=:), allocatable :: text
         text = "key=value with keys "//cli%key_list()
         if (cli%files) text = text//", one scene file"
-        text = text//", or --help"
+        if (allocated(cli%version)) then
+            text = text//", --help or --version"
+        else
+            text = text//", or --help"
+        end if
     end function allowed_arguments
 
     pure logical function is_help(arg)
@@ -477,7 +595,8 @@ contains
             if (.not. cli%keys(k)%in_file) k = 0
         end if
         if (k == 0) then
-            call refuse("unknown key; allowed in a file: "//file_keys(cli))
+            call refuse("unknown key"//did_you_mean(cli, item%name, .true.)//"; allowed in a " &
+                //"file: "//file_keys(cli))
             return
         end if
         if (seen(k)) then
@@ -721,8 +840,8 @@ contains
     end subroutine command_args
 
     !> For programs: read the command line into `cli`; on `--help` print the
-    !> usage on stdout and stop; on bad input, or help that cannot be
-    !> written, `fail`.
+    !> usage on stdout and stop (on `--version`, the name and version); on
+    !> bad input, or help that cannot be written, `fail`.
     subroutine read_command_line(cli)
         type(cli_t), intent(inout) :: cli
         type(string_t), allocatable :: args(:)
@@ -730,8 +849,12 @@ contains
         type(text_out_t) :: out
         call command_args(args)
         call cli%parse(args, error)
-        if (cli%help) then
-            call out%put_text(cli%usage()//new_line("a"))
+        if (cli%help .or. cli%show_version) then
+            if (cli%help) then
+                call out%put_text(cli%usage()//new_line("a"))
+            else
+                call out%put_text(cli%name//" "//cli%version//new_line("a"))
+            end if
             call out%finish(error)
             if (allocated(error)) call fail(cli%name, error)
             stop

@@ -94,7 +94,8 @@ contains
         if (cli%given("masses")) then
             masses = cli%get_reals("masses")
             if (size(masses) /= p) then
-                call fatal_error(error, "masses = "//printable(cli%get_text("masses"))//": " &
+                call fatal_error(error, origin(cli%keys(key_index(cli, "masses")))//"masses = " &
+                    //printable(cli%get_text("masses"))//": " &
                     //itoa(size(masses))//" values given; allowed exactly p = "//itoa(p) &
                     //" values, each > 0")
                 return
@@ -105,7 +106,8 @@ contains
         if (cli%given("gaps")) then
             gaps = cli%get_reals("gaps")
             if (size(gaps) /= p - 1) then
-                call fatal_error(error, "gaps = "//printable(cli%get_text("gaps"))//": " &
+                call fatal_error(error, origin(cli%keys(key_index(cli, "gaps")))//"gaps = " &
+                    //printable(cli%get_text("gaps"))//": " &
                     //itoa(size(gaps))//" values given; allowed exactly p-1 = "//itoa(p - 1) &
                     //" values, each >= 0")
                 return

@@ -35,6 +35,18 @@ program c12_b1
     integer(8), allocatable :: class_scan(:)
     !> The keys precision = auto (scan and bisections) and critical = yes.
     logical :: auto_runs, with_critical
+    !> An interval of e whose runs have one class: its ends, the run at its
+    !> middle (count, status, collision sequence) and that class.
+    type :: interval_t
+        real(qp) :: lo = 0, hi = 0
+        integer :: n = 0, status = 0
+        integer, allocatable :: pairs(:)
+        integer(8) :: class = 0
+    end type interval_t
+    !> The intervals from e = 0 up to 1, neighbours of one class joined, and
+    !> the run at e = 1 itself.
+    type(interval_t), allocatable :: intervals(:)
+    type(interval_t) :: at_1
     !> A thread's own scene, run and log for the bisections of step 2.
     type(scene_t), save :: thread_scene
     type(run_t), save :: thread_run
@@ -42,12 +54,14 @@ program c12_b1
     integer, allocatable, save :: thread_pairs(:)
     !$omp threadprivate(thread_scene, thread_run, thread_events, thread_pairs)
 
+    e_c = -1.0_qp
     call define_keys()
     call scan()
     call find_changes()
-    call write_intervals()
+    call find_intervals()
     if (with_critical) call critical_by_simulation()
     if (with_critical) call critical_from_cycle()
+    call write_intervals()
     if (with_critical) call write_critical()
     call write_answers()
 
@@ -58,7 +72,9 @@ contains
         call start_program(cli, "c12-b1", &
             "C12 task b1: n(e) from e = 1 down to 0, its intervals of constant n and"//nl// &
             "collision sequence, and the critical restitution of inelastic collapse."//nl// &
-            "Writes OUT/b1_scan.tsv, b1_intervals.tsv, b1_critical.tsv, b1_answers.tsv.")
+            "Writes OUT/b1_scan.tsv, b1_intervals.tsv, b1_critical.tsv, b1_answers.tsv."//nl// &
+            "A sequence names each collision in order by its pair, k for spheres k and"//nl// &
+            "k+1: 123121 is 1-2, 2-3, 3-4, 1-2, 2-3, 1-2 (dots between pairs past 9).")
         call cli%add_int("n_scan", "2001", "points of the scan of e in [0, 1]", lo=3)
         call cli%add_real("resolution", "1e-12", &
             "width to which each change of n is bisected", lo=1.0e-30_qp, hi=0.1_qp)
@@ -280,9 +296,10 @@ contains
         call write_answer(unit, "b1.resolution", str(resolution), "-", "-", "-", &
             "width to which each change of the scan's collision sequence is bisected")
         call write_answer(unit, "b1.intervals", itoa(n_intervals), "-", "-", "-", &
-            "intervals of constant n and sequence found, each end bisected to "// &
-            str(resolution)//" (changes with n > "//itoa(n_bisect_max)//" on both sides are "// &
-            "left to the critical table)")
+            "intervals of constant n and sequence found above the quasi-plastic ones (the "// &
+            "point e = 1 among them), each end bisected to "//str(resolution)// &
+            " (changes with n > "//itoa(n_bisect_max)//" on both sides are left to the "// &
+            "critical table)")
         call write_answer(unit, "b1.n_at_e1", itoa(n_scan_runs(1)), "closed_form", &
             itoa(scene%p - 1), itoa(n_scan_runs(1) - (scene%p - 1)), &
             "e = 1: one collision per pair")
@@ -320,26 +337,19 @@ contains
             "b1_critical.tsv")
     end subroutine write_critical_answers
 
-    !> b1_intervals.tsv: the intervals between consecutive changes, each with its
-    !> collision count and sequence (of the run at its middle, run in parallel);
-    !> e_quasi is the top of the collapsed ones.
-    subroutine write_intervals()
-        !> The run at the middle of an interval: its count, status, sequence, class.
-        type :: middle_t
-            integer :: n, status
-            integer, allocatable :: pairs(:)
-            integer(8) :: class
-        end type middle_t
-        type(middle_t), allocatable :: middles(:)
+    !> Step 2b: the intervals between consecutive changes, each with the run
+    !> at its middle (run in parallel); neighbours of one class are joined (a
+    !> change bisected towards e = 1, where only the point e = 1 itself
+    !> differs, would otherwise split one interval in two); e_quasi is the
+    !> top of the collapsed ones.
+    subroutine find_intervals()
+        type(interval_t), allocatable :: middles(:)
         ! interval j from ends(j) to ends(j + 1), from 0 to the first change ...
         real(qp), allocatable :: ends(:)
         type(scene_t) :: mine
         type(run_t) :: got
         type(event_log_t) :: log
-        integer(8) :: class_at_1
-        call open_table(out, "b1_intervals.tsv", "e_low"//tab//"e_high"//tab//"width"//tab// &
-            "collisions"//tab//"status"//tab//"sequence", unit, stat, msg)
-        call stop_unless_normal(stat, msg)
+        integer :: n_joined
         allocate (middles(0:n_boundaries), ends(0:n_boundaries + 1))
         ends = [0.0_qp, boundaries, 1.0_qp]
         !$omp parallel do schedule(dynamic, 1) default(shared) private(j, mine, got, log)
@@ -347,38 +357,87 @@ contains
             mine = scene
             call classify_with(0.5_qp*(ends(j) + ends(j + 1)), mine, got, log, &
                 middles(j)%pairs, middles(j)%class)
+            middles(j)%lo = ends(j)
+            middles(j)%hi = ends(j + 1)
             middles(j)%n = got%n
             middles(j)%status = got%status
         end do
         !$omp end parallel do
-        n_intervals = 0
+        allocate (intervals(n_boundaries + 1))
+        n_joined = 0
         e_quasi = -1.0_qp
         do j = 0, n_boundaries
-            lo = ends(j)
-            hi = ends(j + 1)
-            associate (m => middles(j))
-                if (m%status == status_collapsed) then
-                    e_quasi = max(e_quasi, hi)
-                    write (unit, "(a)") str(lo)//tab//str(hi)//tab//str(hi - lo)//tab// &
-                        itoa(m%n)//tab//status_word(m%status)//tab//"-"
+            if (n_joined > 0) then
+                if (intervals(n_joined)%class == middles(j)%class) then
+                    intervals(n_joined)%hi = middles(j)%hi
+                    cycle
+                end if
+            end if
+            n_joined = n_joined + 1
+            intervals(n_joined) = middles(j)
+        end do
+        intervals = intervals(:n_joined)
+        do j = 1, n_joined
+            if (intervals(j)%status == status_collapsed) e_quasi = max(e_quasi, intervals(j)%hi)
+        end do
+        call classify(1.0_qp, at_1%class)
+        at_1%n = run%n
+        at_1%status = run%status
+        at_1%pairs = pairs
+    end subroutine find_intervals
+
+    !> b1_intervals.tsv: the intervals of find_intervals, each with its
+    !> collision count and sequence, and what the row does there in exact
+    !> arithmetic. The collapsed interval is split at e_crit (when the
+    !> collapse cycle gave it): below it the row collapses, above it the row
+    !> separates after ever more collisions as e -> e_crit, which the
+    !> default tolerance merges (their counts are b1_critical.tsv's). Neither
+    !> part has a finite count or a sequence. e = 1 itself is a point of its
+    !> own (one collision per pair), apart from the interval just below it.
+    subroutine write_intervals()
+        logical :: split
+        call open_table(out, "b1_intervals.tsv", "e_low"//tab//"e_high"//tab//"width"//tab// &
+            "collisions"//tab//"status"//tab//"in_exact_arithmetic"//tab//"sequence", unit, &
+            stat, msg)
+        call stop_unless_normal(stat, msg)
+        n_intervals = 0
+        do j = 1, size(intervals)
+            associate (v => intervals(j))
+                if (v%status == status_collapsed) then
+                    split = e_c > v%lo .and. e_c < v%hi
+                    if (split) then
+                        call collapsed_row(v%lo, e_c, "collapses")
+                        call collapsed_row(e_c, v%hi, "separates")
+                    else
+                        call collapsed_row(v%lo, v%hi, merge("collapses", "-        ", &
+                            e_c >= v%hi))
+                    end if
                 else
-                    write (unit, "(a)") str(lo)//tab//str(hi)//tab//str(hi - lo)//tab// &
-                        itoa(m%n)//tab//status_word(m%status)//tab//sequence_text(m%pairs)
+                    write (unit, "(a)") str(v%lo)//tab//str(v%hi)//tab//str(v%hi - v%lo)//tab &
+                        //itoa(v%n)//tab//status_word(v%status)//tab//"separates"//tab &
+                        //sequence_text(v%pairs)
+                    n_intervals = n_intervals + 1
                 end if
             end associate
-            n_intervals = n_intervals + 1
         end do
-        ! e = 1 itself is a point of its own (one collision per pair), apart
-        ! from the interval just below it
-        call classify(1.0_qp, class_at_1)
-        if (class_at_1 /= middles(n_boundaries)%class) then
+        if (at_1%class /= intervals(size(intervals))%class) then
             write (unit, "(a)") str(1.0_qp)//tab//str(1.0_qp)//tab//str(0.0_qp)//tab// &
-                itoa(run%n)//tab//status_word(run%status)//tab//sequence_text(pairs)
+                itoa(at_1%n)//tab//status_word(at_1%status)//tab//"separates"//tab// &
+                sequence_text(at_1%pairs)
             n_intervals = n_intervals + 1
         end if
         call close_table(unit, stat, msg)
         call stop_unless_written(stat, msg)
     end subroutine write_intervals
+
+    !> A row of b1_intervals.tsv for the collapsed interval from a to b: no
+    !> count, no sequence; `exact` says what the row does there.
+    subroutine collapsed_row(a, b, exact)
+        real(qp), intent(in) :: a, b
+        character(len=*), intent(in) :: exact
+        write (unit, "(a)") str(a)//tab//str(b)//tab//str(b - a)//tab//"-"//tab// &
+            status_word(status_collapsed)//tab//trim(exact)//tab//"-"
+    end subroutine collapsed_row
 
     !> Whether the run at e with the scene's tolerance collapses (own scene and run: thread-safe).
     logical function collapses(e)

@@ -176,8 +176,8 @@ contains
         character(len=:), allocatable :: f(:)
         integer :: u, ios, c(4)
         logical :: ok
-        call open_columns(out//"/methods_costs.tsv", [character(len=20) :: "e[1]", "label", &
-            "ns_per_run[ns]", "ns_per_collision[ns]"], u, c, ok)
+        call open_columns(out//"/timing/methods_costs.tsv", [character(len=20) :: "e[1]", &
+            "label", "ns_per_run[ns]", "ns_per_collision[ns]"], u, c, ok)
         if (.not. ok) return
         do
             read (u, "(a)", iostat=ios) line
@@ -186,10 +186,10 @@ contains
             if (size(f) < maxval(c)) cycle
             write (unit, "(a)") "methods."//trim(f(c(2)))//".ns_per_run"//tab// &
                 trim(f(c(3)))//tab//"ns"//tab//"e = "//trim(f(c(1)))// &
-                ", from methods_costs.tsv"
+                ", from timing/methods_costs.tsv"
             write (unit, "(a)") "methods."//trim(f(c(2)))//".ns_per_collision"//tab// &
                 trim(f(c(4)))//tab//"ns"//tab//"e = "//trim(f(c(1)))// &
-                ", from methods_costs.tsv"
+                ", from timing/methods_costs.tsv"
         end do
         close (u)
     end subroutine method_costs

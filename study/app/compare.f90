@@ -8,9 +8,9 @@
 !> magnitude of its column (so real(16) columns agree to ~1e-30, real64 ones to
 !> ~1e-12). Timing columns (a header with [s] or [ns], and the repeat counts
 !> `batches`, `runs_per_batch` chosen from timings) and the tables of timings
-!> and of the machine (bench.tsv, methods_costs.tsv, methods_platform.tsv,
-!> cost.tsv, cost_summary.tsv) are
-!> skipped: they are measurements.
+!> and of the machine (bench.tsv, cost.tsv, cost_summary.tsv; the study's own
+!> are in the subdirectory timing/, which is not compared) are skipped: they
+!> are measurements.
 program tsv_compare
     use, intrinsic :: iso_fortran_env, only: error_unit
     use sphere_row, only: qp, itoa
@@ -45,8 +45,7 @@ program tsv_compare
     do
         read (unit, "(a)", iostat=ios) file
         if (ios /= 0) exit
-        if (trim(file) == "bench.tsv" .or. trim(file) == "methods_costs.tsv" .or. &
-            trim(file) == "methods_platform.tsv" .or. trim(file) == "cost.tsv" .or. &
+        if (trim(file) == "bench.tsv" .or. trim(file) == "cost.tsv" .or. &
             trim(file) == "cost_summary.tsv") cycle
         call compare_file(trim(file))
         n_files = n_files + 1

@@ -80,9 +80,11 @@ contains
             "against the reference engine (real128): the engine in each real kind built;"//nl// &
             "absolute variables in dp, qp; GSL ODE integration (rk8pd, rkf45) with state"//nl// &
             "events; fixed time steps. Writes into the directory `out`:"//nl// &
-            "  methods_work_precision.tsv  CPU time and errors per scene, method, setting"//nl// &
+            "  methods_work_precision.tsv  errors per scene, method, setting"//nl// &
             "  methods_stability.tsv       outcome category over e from 1 to 0"//nl// &
             "  methods_min_distance.tsv    smallest e - e_c with the right count, per kind"//nl// &
+            "and the machine's measurements into `out`/timing:"//nl// &
+            "  methods_work_precision.tsv  CPU time per run of each row of the table above"//nl// &
             "  methods_costs.tsv           ns per run and per collision at e = 0.2, 0.172"//nl// &
             "  methods_platform.tsv        CPU model, compiler version and options")
         call cli%add_int("repeats", "5", "timing batches per measurement (median taken)", &
@@ -129,8 +131,11 @@ contains
         end do
     end subroutine method_list
 
-    !> methods_work_precision.tsv and methods_costs.tsv: every method on each
-    !> scene, timed, against the reference.
+    !> methods_work_precision.tsv: every method on each scene against the
+    !> reference; its CPU times, which differ from machine to machine, go to
+    !> timing/methods_work_precision.tsv (row by row the same) and
+    !> timing/methods_costs.tsv, so that the table of errors is the same
+    !> wherever the study runs.
     subroutine work_precision()
         !> The scenes: a finite run (e = 0.2), three above e_c by a decade each,
         !> and e = 0.172 just above e_c.
@@ -144,19 +149,21 @@ contains
         type(comparison_t) :: cmp
         type(scene_t) :: scene
         real(qp) :: seconds, err
-        integer :: s, m, unit, unit_cost, runs, batches
+        integer :: s, m, unit, unit_time, unit_cost, runs, batches
         call open_table(out_dir, "methods_work_precision.tsv", "scene"//tab//"e[1]"//tab &
-            //"e_minus_ec[1]"//tab//"label"//tab//"method"//tab &
-            //"kind"//tab//"setting[1|L/V]"//tab//"cpu_per_run[s]"//tab//"batches"//tab &
-            //"runs_per_batch"//tab//"collisions"//tab//"collisions_ref"//tab//"same_count" &
+            //"e_minus_ec[1]"//tab//"label"//tab//"method"//tab//"kind"//tab &
+            //"setting[1|L/V]"//tab//"collisions"//tab//"collisions_ref"//tab//"same_count" &
             //tab//"same_sequence"//tab//"matched"//tab//"v_error[V]"//tab//"t_error[L/V]" &
             //tab//"error[1]"//tab//"min_gap[L]"//tab//"steps"//tab//"status"//tab//"category", &
             unit, stat, msg)
         call stop_unless_normal(stat, msg)
-        call open_table(out_dir, "methods_costs.tsv", "e[1]"//tab//"label"//tab//"method"//tab &
-            //"kind"//tab//"setting[1|L/V]"//tab//"collisions_ref"//tab//"collisions"//tab &
-            //"ns_per_run[ns]"//tab//"ns_per_collision[ns]"//tab//"category", unit_cost, stat, &
-            msg)
+        call open_table(timing_dir(), "methods_work_precision.tsv", "scene"//tab//"label" &
+            //tab//"cpu_per_run[s]"//tab//"batches"//tab//"runs_per_batch", unit_time, stat, msg)
+        call stop_unless_normal(stat, msg)
+        call open_table(timing_dir(), "methods_costs.tsv", "e[1]"//tab//"label"//tab &
+            //"method"//tab//"kind"//tab//"setting[1|L/V]"//tab//"collisions_ref"//tab &
+            //"collisions"//tab//"ns_per_run[ns]"//tab//"ns_per_collision[ns]"//tab &
+            //"category", unit_cost, stat, msg)
         call stop_unless_normal(stat, msg)
         do s = 1, size(scenes)
             call scene_at(scenes(s), scene)
@@ -174,12 +181,13 @@ contains
                 write (unit, "(a)") itoa(s)//tab//str(scenes(s))//tab//str(scenes(s) - e_crit) &
                     //tab//method_label(methods(m))//tab//method_name(methods(m))//tab &
                     //kind_name(methods(m)%precision)//tab//str(method_setting(methods(m))) &
-                    //tab//str(seconds)//tab//itoa(batches)//tab//itoa(runs)//tab//itoa(run%n) &
-                    //tab//itoa(ref%n)//tab//yes_no(cmp%same_count)//tab &
+                    //tab//itoa(run%n)//tab//itoa(ref%n)//tab//yes_no(cmp%same_count)//tab &
                     //yes_no(cmp%same_sequence)//tab//itoa(cmp%n_matched)//tab &
                     //str(cmp%v_error)//tab//str(cmp%t_error)//tab//str(err)//tab &
                     //str(run%min_gap)//tab//itoa(run%steps)//tab//status_word(run%status) &
                     //tab//category_word(classify(ref, run, method_v_tol(methods(m), scene%v0)))
+                write (unit_time, "(a)") itoa(s)//tab//method_label(methods(m))//tab &
+                    //str(seconds)//tab//itoa(batches)//tab//itoa(runs)
                 if (in_costs(s)) then
                     write (unit_cost, "(a)") str(scenes(s))//tab//method_label(methods(m))//tab &
                         //method_name(methods(m))//tab//kind_name(methods(m)%precision)//tab &
@@ -192,9 +200,17 @@ contains
         end do
         call close_table(unit, stat, msg)
         call stop_unless_written(stat, msg)
+        call close_table(unit_time, stat, msg)
+        call stop_unless_written(stat, msg)
         call close_table(unit_cost, stat, msg)
         call stop_unless_written(stat, msg)
     end subroutine work_precision
+
+    !> The directory of the machine's measurements: `out`/timing.
+    function timing_dir() result(dir)
+        character(len=:), allocatable :: dir
+        dir = out_dir//"/timing"
+    end function timing_dir
 
     !> methods_stability.tsv: the category of each method on the map over e,
     !> from 1 down through e_c to 0, log-spaced in |e - e_c| from 1e-7 on.
@@ -369,10 +385,11 @@ contains
         last = now
     end subroutine lap
 
-    !> methods_platform.tsv: where and how the times were taken.
+    !> timing/methods_platform.tsv: where and how the times were taken.
     subroutine platform()
         integer :: unit
-        call open_table(out_dir, "methods_platform.tsv", "item"//tab//"value", unit, stat, msg)
+        call open_table(timing_dir(), "methods_platform.tsv", "item"//tab//"value", unit, stat, &
+            msg)
         call stop_unless_normal(stat, msg)
         write (unit, "(a)") "cpu_model"//tab//cpu_model()
         write (unit, "(a)") "compiler_version"//tab//compiler_version()

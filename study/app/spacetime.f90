@@ -7,11 +7,11 @@
 !> log that would not fit; then with it.
 program c12_spacetime
     use sphere_row, only: qp, scene_t, run_t, event_log_t, simulate, status_invalid, &
-        status_max_collisions, itoa, short_text
+        status_max_collisions, status_normal, itoa, short_text
     use sphere_row_study_cli, only: cli_t, add_scene_keys, start_program, read_keys, fail, &
         stop_unless_normal, stop_unless_written, say
     use sphere_row_spacetime, only: spacetime_t, write_spacetime, default_every, &
-        check_log_size, spheres_most
+        check_log_size, spheres_most, drawable_collisions
     implicit none
     character(len=*), parameter :: nl = new_line("a")
     !> Default end of the window, past the last event by this part of its time,
@@ -50,8 +50,12 @@ program c12_spacetime
 
     call simulate(scene, run)
     if (run%status == status_invalid) call fail(run%message)
-    call check_log_size(scene, run%n, run%limits%n, stat, msg)
-    call stop_unless_normal(stat, msg)
+    call check_log_size(scene, run%n, run%limits%n, 0, stat, msg)
+    ! the largest budget whose log fits, searched only when this one's does not
+    if (stat /= status_normal) then
+        call check_log_size(scene, run%n, run%limits%n, drawable_collisions(scene), stat, msg)
+        call stop_unless_normal(stat, msg)
+    end if
     call simulate(scene, run, log)
     if (run%status == status_invalid) call fail(run%message)
     ! past the last event by a part of its time (a run of closed gaps may

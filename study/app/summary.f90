@@ -64,10 +64,13 @@ contains
             [character(len=60) :: "b1_n", "b1_critical"], &
             "A scan of e from 1 to 0 (b1_scan.tsv) finds every change of the collision "// &
             "sequence between neighbours and bisects it to "//short("b1", "b1.resolution")// &
-            " (b1_intervals.tsv: each interval of constant n with its sequence). As e "// &
+            " (b1_intervals.tsv: each interval of constant n with its sequence, each "// &
+            "collision named by its pair, k for spheres k and k+1: 123121 is 1-2, 2-3, "// &
+            "3-4, 1-2, 2-3, 1-2). As e "// &
             "falls towards e_crit, n grows without bound: near e_crit the run follows a "// &
             "cycle of collisions (b1.e_crit names the one found) whose linear map M(e) on "// &
-            "the gap rates, a product of the maps (6), has three real eigenvalues below "// &
+            "the gap rates, a product of the collision maps (6) (the rule (2) written for "// &
+            "the gap rates), has three real eigenvalues below "// &
             "e_crit and a complex pair r exp(+-i theta) above it. A self-similar collapse "// &
             "needs a real dominant eigenvector, so below e_crit the collisions never end; "// &
             "above it the phase theta ~ sqrt(e - e_crit) turns the state out of the cycle "// &
@@ -78,11 +81,14 @@ contains
             ") brackets it from above to ~"//short("b1", "b1.e_crit_simulation", difference, 1) &
             //": a finite run this close to e_crit shrinks its relative velocities below "// &
             "any fixed tolerance. With the default tolerance (epsilon v0) the quasi-plastic "// &
-            "case is reported from b1.e_quasi_plastic down.")
+            "case is reported from b1.e_quasi_plastic down; the table splits that range at "// &
+            "e_crit: below it the row collapses, above it the row separates in exact "// &
+            "arithmetic after more collisions than the tolerance follows (b1_critical.tsv).")
         call section("b2", "Task b2: final velocities against e", &
             [character(len=60) :: "b2_velocities"], &
             "On an interval of constant collision sequence each final velocity is a "// &
-            "polynomial in e, the product of the collision maps (2), whose coefficients "// &
+            "polynomial in e, the product of the collision rule (2) on the velocities "// &
+            "(the same rule as (6) on the gap rates), whose coefficients "// &
             "(b2_closed_forms.tsv) are exact dyadic rationals for equal masses. From e = 1 "// &
             "down to b2.single_hit_e_min the last sphere p is hit once, after each pair "// &
             "before it has passed on the factor (1+e)/2, so v_p = v0 ((1+e)/2)^(p-1) there. "// &

@@ -24,11 +24,12 @@
 module sphere_row_spacetime
     use, intrinsic :: iso_fortran_env, only: int64
     use sphere_row, only: qp, scene_t, run_t, event_log_t, event_collision, event_collapse, &
-        status_normal, status_invalid, status_word, short_text, itoa
+        status_normal, status_invalid, status_word, short_text, itoa, simulate
     use sphere_row_tables, only: open_table, close_table, row_t, tab, write_rows
     implicit none
     private
     public :: spacetime_t, write_spacetime, default_every, drawn, check_log_size, caption
+    public :: drawable_collisions
     public :: spheres_most, log_bytes_most
 
     !> Rows of more spheres than this are drawn by every k-th sphere
@@ -67,30 +68,97 @@ contains
         drawn = mod(i - 1, every) == 0 .or. i == p
     end function drawn
 
+    !> Events (collisions and collapse limits) whose rows, with the initial
+    !> state's, fit log_bytes_most for a row of p spheres.
+    pure integer(int64) function events_most(p)
+        integer, intent(in) :: p
+        events_most = log_bytes_most/(2_int64*(p - 1)*storage_size(1.0_qp)/8) - 1
+    end function events_most
+
+    !> The largest work budget max_collisions whose run's log fits
+    !> log_bytes_most: its collisions and the collapse limits taken among them
+    !> (0 if not even one collision fits). A run capped at N collisions is the
+    !> first part of the run capped later, so its number of limits c(N) grows
+    !> with N: N_0 = E - c(E) fits for E = events_most, none above E - c(N_0)
+    !> does, and the bisection between them takes a few runs without a log
+    !> (O(p) memory each, at most E collisions).
+    integer function drawable_collisions(scene) result(cap)
+        type(scene_t), intent(in) :: scene
+        integer :: lo, hi, mid, at_e
+        integer(int64) :: most
+        most = min(events_most(scene%p), int(huge(1), int64))
+        cap = 0
+        if (most < 1) return
+        if (events_of(int(most), at_e)) then
+            cap = int(most)
+            return
+        end if
+        lo = 0
+        hi = int(most) - 1
+        mid = int(most) - at_e
+        if (mid >= 1) then
+            if (events_of(mid, at_e)) then
+                lo = mid
+                hi = min(hi, int(most) - at_e)
+            else
+                hi = mid - 1
+            end if
+        end if
+        do while (lo < hi)
+            mid = lo + (hi - lo + 1)/2
+            if (events_of(mid, at_e)) then
+                lo = mid
+            else
+                hi = mid - 1
+            end if
+        end do
+        cap = lo
+
+    contains
+
+        !> Whether the run capped at n collisions fits the log; `limits` its
+        !> number of collapse limits.
+        logical function events_of(n, limits) result(fits)
+            integer, intent(in) :: n
+            integer, intent(out) :: limits
+            type(scene_t) :: capped
+            type(run_t) :: run
+            capped = scene
+            capped%max_collisions = n
+            call simulate(capped, run)
+            limits = run%limits%n
+            fits = int(run%n, int64) + limits <= most
+        end function events_of
+
+    end function drawable_collisions
+
     !> Refuse (stat = status_invalid, one line in msg naming what to change)
     !> a run whose event log would exceed log_bytes_most: `collisions` and
     !> `collapses` are its numbers of events, found by a run without a log,
-    !> which costs O(p) memory however long it is. The cap on collisions it
-    !> suggests leaves room for every collapse limit of the whole run.
-    pure subroutine check_log_size(scene, collisions, collapses, stat, msg)
+    !> which costs O(p) memory however long it is; `cap` is the largest work
+    !> budget whose run fits (drawable_collisions), suggested in the message.
+    pure subroutine check_log_size(scene, collisions, collapses, cap, stat, msg)
         type(scene_t), intent(in) :: scene
-        integer, intent(in) :: collisions, collapses
+        integer, intent(in) :: collisions, collapses, cap
         integer, intent(out) :: stat
         character(len=:), allocatable, intent(out) :: msg
-        integer(int64) :: bytes, per_event, events_most
+        integer(int64) :: bytes, per_event
         per_event = 2_int64*(scene%p - 1)*storage_size(1.0_qp)/8
         bytes = per_event*(int(collisions, int64) + collapses + 1)
         stat = status_normal
         msg = ""
         if (bytes <= log_bytes_most) return
         stat = status_invalid
-        events_most = max(1_int64, log_bytes_most/per_event - 1 - collapses)
         msg = "p = "//itoa(scene%p)//" with e = "//short_text(scene%e)//": the event log of " &
             //"its "//itoa(int(collisions, int64) + collapses)//" events would need " &
             //short_text(real(bytes, qp), 2)//" bytes; allowed at most " &
-            //short_text(real(log_bytes_most, qp), 2)//" (fewer spheres, or max_collisions <= " &
-            //itoa(min(events_most, int(huge(1), int64)))//" to draw the run up to that " &
-            //"collision)"
+            //short_text(real(log_bytes_most, qp), 2)
+        if (cap > 0) then
+            msg = msg//" (fewer spheres, or max_collisions <= "//itoa(cap)//" to draw the " &
+                //"run up to that collision)"
+        else
+            msg = msg//" (fewer spheres: not even one collision of this row fits)"
+        end if
     end subroutine check_log_size
 
     !> The scene and its run in a few words, for the figure's title: the

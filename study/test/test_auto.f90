@@ -44,7 +44,8 @@ contains
             new_unittest("sweeps_one_and_two_threads_identical", test_sweep_threads), &
             new_unittest("collapse_survey_one_and_two_threads_identical", &
             test_collapse_threads), &
-            new_unittest("b1_auto_tables_equal_qp", test_b1_auto) &
+            new_unittest("b1_auto_tables_equal_qp", test_b1_auto), &
+            new_unittest("b1_intervals_split_at_e_crit_and_joined", test_b1_intervals) &
             ]
     end function collect_auto
 
@@ -322,13 +323,14 @@ contains
     end subroutine test_sweep_threads
 
     !> c12-collapse on 1 and 2 threads counts the same rows (its rows run on
-    !> the threads): the same unanswered rows, answers and table per p (the
-    !> survey table has timings and is not compared).
+    !> the threads): the same unanswered rows, answers, table per p and survey
+    !> table (its wall times are in timing/collapse_survey.tsv, not compared).
     subroutine test_collapse_threads(error)
         type(error_t), allocatable, intent(out) :: error
         character(len=*), parameter :: dir = "build/test-collapse-threads"
-        character(len=*), parameter :: tables(3) = [character(len=24) :: &
-            "collapse_unanswered.tsv", "collapse_answers.tsv", "collapse_by_p.tsv"]
+        character(len=*), parameter :: tables(4) = [character(len=24) :: &
+            "collapse_unanswered.tsv", "collapse_answers.tsv", "collapse_by_p.tsv", &
+            "collapse_survey.tsv"]
         call run_twice(error, dir, "c12-collapse", "n=60 n_before=20 cap=3000", &
             "", "", &
             "OMP_NUM_THREADS=1 ", "OMP_NUM_THREADS=2 ", "", "", tables)
@@ -345,6 +347,59 @@ contains
         call run_twice(error, dir, "c12-b1", "n_scan=401 critical=no", "", "", "", "", &
             " precision=auto", " precision=qp", tables)
     end subroutine test_b1_auto
+
+    !> c12-b1's intervals: the quasi-plastic range is two rows split at the
+    !> cycle's e_crit (collapses below, separates above), with no count or
+    !> sequence; no two neighbours have one count and sequence (a change
+    !> bisected towards e = 1 once split [0.268, 1) at 1 - 4.7e-13); the
+    !> interval below e = 1 reaches 1, and e = 1 is a point of its own.
+    subroutine test_b1_intervals(error)
+        type(error_t), allocatable, intent(out) :: error
+        character(len=*), parameter :: dir = "build/test-b1-intervals", one = &
+            "1.000000000000000000000000000000000E+00"
+        character(len=:), allocatable :: path, table, answers, e_crit, line
+        character(len=200), allocatable :: rows(:, :)
+        integer :: status, n, k, start, finish
+        path = program_path("c12-b1")
+        call check(error, len(path) > 0, "c12-b1 is not built")
+        if (allocated(error)) return
+        call execute_command_line("rm -rf "//dir//" && "//path//" n_scan=101 resolution=1e-8 " &
+            //"out="//dir//" > /dev/null", exitstat=status)
+        call check(error, status == 0, "c12-b1 n_scan=101 resolution=1e-8 failed")
+        if (allocated(error)) return
+        answers = read_text(dir//"/b1_answers.tsv")
+        start = index(answers, new_line("a")//"b1.e_crit"//achar(9)) + 11
+        e_crit = answers(start:start + index(answers(start:), achar(9)) - 2)
+        table = read_text(dir//"/b1_intervals.tsv")
+        n = count_lines(table) - 1
+        allocate (rows(7, n))
+        rows = ""
+        start = index(table, new_line("a")) + 1
+        do k = 1, n
+            finish = start + index(table(start:), new_line("a")) - 2
+            line = table(start:finish)
+            read (line, *) rows(1:6, k)
+            rows(7, k) = line(index(line, achar(9), back=.true.) + 1:)
+            start = finish + 2
+        end do
+        call check(error, all(rows(:, 1) == [character(len=200) :: "0.000000000000000000000000" &
+            //"000000000E+00", e_crit, rows(3, 1), "-", "quasi_plastic", "collapses", "-"]), &
+            "first row: "//trim(rows(1, 1))//" "//trim(rows(2, 1))//" "//trim(rows(6, 1)))
+        call check(error, rows(1, 2) == e_crit .and. rows(4, 2) == "-" .and. &
+            rows(5, 2) == "quasi_plastic" .and. rows(6, 2) == "separates", "second row from " &
+            //trim(rows(1, 2))//": "//trim(rows(6, 2)))
+        call check(error, rows(2, n - 1) == one .and. rows(1, n) == one .and. &
+            rows(2, n) == one .and. rows(4, n) == "3", "the rows at e = 1: "//trim(rows(2, n - 1)) &
+            //", "//trim(rows(1, n))//" "//trim(rows(4, n)))
+        do k = 3, n - 1
+            call check(error, rows(2, k - 1) == rows(1, k), "a gap between rows before " &
+                //trim(rows(1, k)))
+            call check(error, rows(4, k) /= rows(4, k - 1) .or. rows(7, k) /= rows(7, k - 1), &
+                "neighbours of one count and sequence at "//trim(rows(1, k)))
+            if (allocated(error)) return
+        end do
+        call execute_command_line("rm -rf "//dir)
+    end subroutine test_b1_intervals
 
     !> Programs a (and b, if named) with their keys, once with prefix p1 and
     !> suffix s1 into dir/t1, once with p2 and s2 into dir/t2; then each of

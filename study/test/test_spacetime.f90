@@ -5,7 +5,7 @@ module test_spacetime
     use sphere_row, only: qp, scene_t, run_t, event_log_t, scene_init, simulate, &
         status_normal, status_invalid, status_collapsed, str, itoa
     use sphere_row_spacetime, only: spacetime_t, write_spacetime, check_log_size, drawn, &
-        default_every
+        default_every, drawable_collisions
     use sphere_row_tables, only: split_tabs
     use testsuite, only: error_t, unittest_t, new_unittest, check
     implicit none
@@ -27,7 +27,8 @@ contains
             new_unittest("elastic_world_lines_by_hand", test_elastic_by_hand), &
             new_unittest("collapse_limit_in_its_table", test_collapse), &
             new_unittest("every_kth_sphere_lines_exact", test_every), &
-            new_unittest("event_log_too_large_refused", test_log_size) &
+            new_unittest("event_log_too_large_refused", test_log_size), &
+            new_unittest("suggested_budget_fits_and_is_largest", test_drawable) &
             ]
     end function collect_spacetime
 
@@ -192,14 +193,41 @@ contains
         character(len=400) :: text
         character(len=:), allocatable :: msg
         call scene_init(scene, stat, text, p=1000000, e=1.0_qp)
-        call check_log_size(scene, 999999, 0, stat, msg)
+        call check_log_size(scene, 999999, 0, 82, stat, msg)
         call check(error, stat == status_invalid .and. index(msg, "p = 1000000") == 1 .and. &
-            index(msg, "max_collisions <= ") > 0, "refusal: "//trim(msg))
+            index(msg, "max_collisions <= 82 ") > 0, "refusal: "//trim(msg))
         if (allocated(error)) return
         call scene_init(scene, stat, text, p=4, e=0.1_qp)
-        call check_log_size(scene, 57, 1, stat, msg)
+        call check_log_size(scene, 57, 1, 0, stat, msg)
         call check(error, stat == status_normal, "the definition's row: "//trim(msg))
     end subroutine test_log_size
+
+    !> The budget a refusal suggests is the largest whose run's log fits: a
+    !> row of 10^5 spheres at e = 0.5, whose full run takes 2053 collapse
+    !> limits among its 10^7 collisions, fits 82 events; its first 82
+    !> collisions take no limit, so max_collisions = 82 fits and 83 does not
+    !> (the suggestion once subtracted the whole run's limits and said 1).
+    subroutine test_drawable(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(scene_t) :: scene
+        type(run_t) :: run
+        integer :: stat, cap
+        character(len=400) :: text
+        character(len=:), allocatable :: msg
+        call scene_init(scene, stat, text, p=100000, e=0.5_qp)
+        cap = drawable_collisions(scene)
+        call check(error, cap == 82, "suggested max_collisions <= "//itoa(cap)//", not 82")
+        if (allocated(error)) return
+        scene%max_collisions = cap
+        call simulate(scene, run)
+        call check_log_size(scene, run%n, run%limits%n, cap, stat, msg)
+        call check(error, stat == status_normal, "the suggested budget is refused: "//msg)
+        if (allocated(error)) return
+        scene%max_collisions = cap + 1
+        call simulate(scene, run)
+        call check_log_size(scene, run%n, run%limits%n, cap, stat, msg)
+        call check(error, stat == status_invalid, "one collision more fits too: "//itoa(cap + 1))
+    end subroutine test_drawable
 
     !> Run a row of p spheres (gaps a, diameter d, v0 = 1) with its log,
     !> write its diagram up to t_max with every k-th sphere, and read its
