@@ -4,7 +4,7 @@
 module test_collapse
     use sphere_row, only: qp, dp, scene_t, run_t, event_log_t, scene_init, simulate, &
         kinetic_energy, momentum, status_normal, status_collapsed, status_max_collisions, str, &
-        itoa, answer_exact, answer_certified, answer_tolerance, answer_bounded, &
+        itoa, answer_exact, answer_certified, answer_tolerance, answer_bounded, collapse_proven, &
         answer_unresolved, answer_word
     use sphere_row_cascade, only: cascade_jump
     use testsuite, only: error_t, unittest_t, new_unittest, check, seed_random, cases
@@ -222,6 +222,7 @@ contains
             new_unittest("plastic_unequal_masses", test_plastic_unequal), &
             new_unittest("finite_counts_near_e_crit", test_near_critical), &
             new_unittest("three_sphere_threshold", test_three_spheres), &
+            new_unittest("touching_three_blocks_certified_below_their_edge", test_three_blocks), &
             new_unittest("log_does_not_change_result", test_log_neutral), &
             new_unittest("random_rows_finite_unchanged", test_random_rows), &
             new_unittest("touching_cascade_matches_fallback", test_touching_cascade), &
@@ -493,6 +494,63 @@ contains
         call check(error, run%status == status_normal .and. run%limits%n == 0, &
             "p = 3 above e_crit: not finite")
     end subroutine test_three_spheres
+
+    !> Three spheres touching, struck from one end (gaps 0,0, or 1,0: sphere
+    !> 1 strikes the touching pair), collapse only below the three-body edge
+    !> (1 - sin t)/(1 + sin t), cos^2 t = m1 m3/((m1 + m2)(m2 + m3)) (7 - 4
+    !> sqrt 3 for equal masses, 0.10102 for 2, 1, 1); above it the cascade
+    !> at one instant separates, hundreds of collisions later as e comes
+    !> closer (503 at e = 0.0718 at rates of 1.5e-288). So above the edge no
+    !> run, at the default tol or a deep one, may say certified or collapse
+    !> proven; 2 % below it the collapse is certified.
+    subroutine test_three_blocks(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(scene_t) :: scene
+        type(run_t) :: run
+        real(qp) :: edge, cos2, above(5), m(3)
+        integer :: stat, i, j, g, t
+        character(len=200) :: msg
+        real(qp), parameter :: masses(3, 3) = reshape([1.0_qp, 1.0_qp, 1.0_qp, &
+            2.0_qp, 1.0_qp, 1.0_qp, 1.0_qp, 0.3_qp, 3.0_qp], [3, 3])
+        real(qp), parameter :: tols(2) = [0.0_qp, 1.0e-300_qp]
+        do j = 1, size(masses, 2)
+            m = masses(:, j)
+            cos2 = m(1)*m(3)/((m(1) + m(2))*(m(2) + m(3)))
+            edge = (1 - sqrt(1 - cos2))/(1 + sqrt(1 - cos2))
+            above = edge*[1 + 1.0e-8_qp, 1 + 1.0e-6_qp, 1 + 1.0e-4_qp, 1 + 1.0e-3_qp, &
+                1 + 4.0e-3_qp]
+            do g = 1, 2
+                do t = 1, size(tols)
+                    do i = 1, size(above)
+                        call init(above(i))
+                        call simulate(scene, run)
+                        call check(error, run%answer /= answer_certified .and. &
+                            .not. collapse_proven(run), "masses "//str(m(1))//" "//str(m(2)) &
+                            //" "//str(m(3))//", e = "//str(above(i))//" above the edge " &
+                            //str(edge)//": certified or proven")
+                        if (allocated(error)) return
+                    end do
+                    call init(0.98_qp*edge)
+                    call simulate(scene, run)
+                    call check(error, run%answer == answer_certified .and. collapse_proven(run), &
+                        "masses "//str(m(1))//", e = 0.98 of the edge: not certified")
+                    if (allocated(error)) return
+                end do
+            end do
+        end do
+    contains
+        subroutine init(e)
+            real(qp), intent(in) :: e
+            real(qp) :: gaps(2)
+            gaps = 0.0_qp
+            if (g == 2) gaps(1) = 1.0_qp
+            if (tols(t) > 0) then
+                call scene_init(scene, stat, msg, p=3, e=e, gaps=gaps, masses=m, tol=tols(t))
+            else
+                call scene_init(scene, stat, msg, p=3, e=e, gaps=gaps, masses=m)
+            end if
+        end subroutine init
+    end subroutine test_three_blocks
 
     !> Keeping a log changes no result line: x_1 is brought forward at the same
     !> points with or without it.

@@ -141,9 +141,19 @@ module sphere_row_policy
         !> (derived: 2^30 repeats is beyond any try's work).
         integer :: jump_window_most = 40, jump_kinds_most = 256, jump_need = 8
         integer :: jump_period_most = 16, jump_levels = 30
-        !> The periods a pattern's certificate runs (chosen: twice the cycle's
-        !> three, as the rate of settling is observed, not computed).
+        !> The periods a pattern is run before its cone is looked for (chosen:
+        !> a quick refusal of patterns that break or do not contract).
         integer :: order_probes = 6
+        !> The cone of a pattern's certificate is sought for the map of 1, 2,
+        !> 4, ... periods, at most 2^cone_doublings (derived: the part of the
+        !> rates off the dominant direction must shrink to half of it within
+        !> the periods; 64 periods cover a second eigenvalue up to 0.99 of the
+        !> first).
+        integer :: cone_doublings = 6
+        !> The most numbers the forms of a cone's choices may take (measured
+        !> for speed and memory: 2^24 reals, 128 MiB in double precision, a
+        !> fraction of a second).
+        real(qp) :: cone_work = 2.0_qp**24
     end type policy_t
 
     !> The policy the engine runs with.
