@@ -24,6 +24,8 @@
 #   make bench           speed: the cost study (cost.tsv, the engine against the tight
 #                        loop in cost_vs_loop.tsv, their figures) and bench.tsv
 #   make check-results   regenerate the study elsewhere and compare with results/
+#   make grid            the collapse region: struck rows p = 50 ... 10^5 at e = 0.2 ...
+#                        0.95, results/collapse_grid.tsv and its answer map (minutes)
 #   make ecrit-full      the full e_c(p) sweep, p = 3 ... 128, into results/ecrit_full/
 #                        (about an hour on 2 cores; MPI=1 NP=... spreads it over ranks)
 #   make docs            API documentation (FORD) in build/docs/index.html
@@ -146,7 +148,7 @@ SVG := $(FIGURES:%=$(RESULTS)/%.svg) $(TIMING)/methods_work_precision.svg \
        $(RESULTS)/methods_stability.svg $(SPACETIME:%=$(RESULTS)/%.svg)
 
 .PHONY: all help prereqs replay install uninstall check-docs test-tools test test-long test-times mutants differential readme-commands test-mpi check-layers study tables \
-        figures bench callgrind check-results docs lint clean fuzz plot examples ecrit-full
+        figures bench callgrind check-results docs lint clean fuzz plot examples ecrit-full grid
 
 all: study
 
@@ -421,6 +423,15 @@ check-results: prereqs ## regenerate the tables in build/ and compare with resul
 	$(BIN)/tsv-compare committed=$(RESULTS) fresh=build/check
 	$(BIN)/c12-ecrit $(ECRIT_FULL_KEYS) p_max=$(ECRIT_FULL_CHECK_P) out=build/check/ecrit_full
 	bash tools/check-ecrit-rows $(ECRIT_FULL) build/check/ecrit_full $(ECRIT_FULL_CHECK_P)
+
+# the collapse region: the definition's scene with more spheres over a grid
+# of p and e (a few minutes: its longest rows spend their budget), its table,
+# the runs' wall times in timing/, and the answer map
+GRID := $(RESULTS)/collapse_grid.tsv $(RESULTS)/timing/collapse_grid.tsv
+grid: prereqs $(BUILD_STAMP) ## the collapse region: p = 50 ... 10^5 by e = 0.2 ... 0.95, collapse_grid.tsv and its map
+	$(call study_run,c12-grid)
+	set -e; for t in png svg; do \
+		gnuplot -e "dir='$(RESULTS)'; term='$$t'; out='$(RESULTS)/collapse_grid.$$t'" study/collapse_grid.gp; done
 
 # the full e_c(p) sweep: its tables, its two figures, and sweep.tsv with its
 # wall time, ranks and threads (MPI=1 NP=... for ranks; OMP_NUM_THREADS threads)

@@ -20,7 +20,7 @@ module sphere_row
         gaps_at_qp => gaps_at_wp, kinetic_energy_qp => kinetic_energy_wp, &
         momentum_qp => momentum_wp, str_qp => str_wp, bounds_t, &
         simulate_certified_qp => simulate_certified_wp, budget_qp => budget_wp, &
-        collapse_proven_qp => collapse_proven_wp
+        collapse_proven_qp => collapse_proven_wp, struck_least => struck_least_wp
 #ifdef SPHERE_ROW_XDP
     use sphere_row_engine_xdp, only: scene_xdp_t => scene_t, run_xdp_t => run_t, &
         event_log_xdp_t => event_log_t, scene_init_xdp => scene_init_wp, &
@@ -62,7 +62,7 @@ module sphere_row
     public :: scene_sp_t, run_sp_t, event_log_sp_t
     public :: scene_init, scene_check, simulate, gaps_at, kinetic_energy, momentum, str, budget
     public :: bounds_t, bounds_dp_t, bounds_sp_t, simulate_certified, auto_t, simulate_auto
-    public :: simulate_in_dp, collapse_proven
+    public :: simulate_in_dp, collapse_proven, struck_least
     public :: sphere_row_version
 
     !> The package's version, as fpm.toml states it (a test compares them).

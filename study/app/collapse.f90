@@ -16,7 +16,7 @@ program c12_collapse
     use sphere_row_tables, only: open_table, close_table, write_answer, answer_header, tab, &
         row_t, write_rows
     use sphere_row_study_cli, only: cli_t, start_program, read_keys, stop_unless_normal, &
-        stop_unless_written
+        stop_unless_written, fail
     implicit none
     character(len=*), parameter :: nl = new_line("a")
     !> Rules compared: every collapse rule, the fallback alone.
@@ -27,7 +27,7 @@ program c12_collapse
     real(qp), parameter :: slack = 1.0e4_qp, per_collision = 4.0_qp
     type(cli_t) :: cli
     character(len=:), allocatable :: out
-    integer :: n, n_before, cap, seed, p_max
+    integer :: n, n_before, cap, seed, p_min, p_max
     real(qp) :: span, equal_share, vtol, tol
     !> What one run leaves for the tables.
     type :: outcome_t
@@ -54,7 +54,8 @@ program c12_collapse
     call cli%add_int("cap", "0", "the work budget of every run in collisions (0: the engine's "// &
         "default, max(10^6, 100 p))", lo=0)
     call cli%add_int("seed", "12", "seed of the MT19937 stream of the rows", lo=0)
-    call cli%add_int("p_max", "20", "largest row length drawn (p from 2)", lo=2)
+    call cli%add_int("p_min", "2", "least row length drawn", lo=2)
+    call cli%add_int("p_max", "20", "largest row length drawn", lo=2)
     call cli%add_real("span", "1000", "unequal masses are log-uniform over [1/span, span]", &
         lo=1.0_qp)
     call cli%add_real("equal_share", "0.5", "share of the rows of equal masses", lo=0.0_qp, &
@@ -69,7 +70,10 @@ program c12_collapse
     n_before = min(cli%get_int("n_before"), n)
     cap = cli%get_int("cap")
     seed = cli%get_int("seed")
+    p_min = cli%get_int("p_min")
     p_max = cli%get_int("p_max")
+    if (p_max < p_min) call fail("c12-collapse: p_max = "//itoa(p_max)// &
+        ": allowed p_max >= p_min = "//itoa(p_min))
     span = cli%get_real("span")
     equal_share = cli%get_real("equal_share")
     vtol = cli%get_real("vtol")
@@ -87,7 +91,7 @@ contains
         type(scene_t) :: scene
         integer :: i, job, rule
         allocate (rows(n), outcome(2, n))
-        call survey_open(survey, seed, 2, p_max, span, equal_share)
+        call survey_open(survey, seed, p_min, p_max, span, equal_share)
         do i = 1, n
             call survey_scene(survey, rows(i))
             rows(i)%max_collisions = cap
@@ -193,7 +197,7 @@ contains
         call open_table(out, "collapse_by_p.tsv", "p"//tab//"scenes"//tab//answer_columns, &
             unit, stat, msg)
         call stop_unless_normal(stat, msg)
-        do p = 2, p_max
+        do p = p_min, p_max
             if (count(rows%p == p) == 0) cycle
             write (unit, "(a)") itoa(p)//tab//itoa(count(rows%p == p))//tab// &
                 answer_counts(every, 1, n, p)
@@ -221,7 +225,8 @@ contains
         do a = answer_exact, answer_unresolved
             call write_answer(unit, "collapse."//answer_word(a), &
                 itoa(count(outcome(every, :)%answer == a)), "scenes", itoa(n), "-", &
-                "random rows (seed "//itoa(seed)//", p = 2.."//itoa(p_max)//") whose answer is " &
+                "random rows (seed "//itoa(seed)//", p = "//itoa(p_min)//".."//itoa(p_max)// &
+                ") whose answer is " &
                 //answer_word(a)//", run by every collapse rule within "//budget_words())
         end do
         call write_answer(unit, "collapse.answered", &

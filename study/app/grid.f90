@@ -1,0 +1,101 @@
+!> The collapse region of a struck row: the definition's scene with more
+!> spheres (equal masses, d = a = v0 = 1, every other setting the engine's
+!> default) over a grid of row lengths p and restitutions e, most of it below
+!> the edge e_c(p). Each run's answer, status, collisions, bound and limits,
+!> whether its final velocities keep the momentum and approach nowhere within
+!> their bounds, the least length q0 from which a struck block is proven to
+!> merge at its e, and its wall time (apart, in timing/).
+program c12_grid
+    use, intrinsic :: iso_fortran_env, only: int64
+    use sphere_row, only: qp, scene_t, run_t, scene_init, simulate, str, itoa, real_str, &
+        answer_word, status_word, struck_least, short_text
+    use sphere_row_survey, only: check_invariants
+    use sphere_row_tables, only: open_table, close_table, tab
+    use sphere_row_study_cli, only: cli_t, start_program, read_keys, stop_unless_normal, &
+        stop_unless_written, fail
+    implicit none
+    character(len=*), parameter :: nl = new_line("a")
+    !> Multiple of the kind's epsilon by which the invariants may miss, and
+    !> the multiple more for each collision a run takes (as c12-collapse).
+    real(qp), parameter :: slack = 1.0e4_qp, per_collision = 4.0_qp
+    type(cli_t) :: cli
+    character(len=:), allocatable :: out
+    real(qp), allocatable :: ps(:), es(:)
+    real(qp) :: vtol
+    integer :: cap, unit, unit_time, stat, i, j, p
+    character(len=300) :: msg
+    type(scene_t) :: scene
+    type(run_t) :: run
+    character(len=:), allocatable :: why
+    integer(int64) :: c0, c1, rate
+
+    call start_program(cli, "c12-grid", &
+        "The collapse region: struck rows of equal spheres (d = a = v0 = 1) over a grid of"//nl// &
+        "row lengths p and restitutions e, each run at the engine's default settings."//nl// &
+        "Writes OUT/collapse_grid.tsv (answer, status, collisions, bound, limits, invariants)"// &
+        nl//"and the runs' wall times in OUT/timing/collapse_grid.tsv.")
+    call cli%add_reals("ps", "50,100,200,1000,10000,100000", "the row lengths p", lo=2.0_qp, &
+        hi=1.0e6_qp)
+    call cli%add_reals("es", "0.2,0.3,0.5,0.7,0.8,0.9,0.95", "the restitutions e", lo=0.0_qp, &
+        hi=1.0_qp)
+    call cli%add_real("vtol", "-1", "the velocity tolerance of a bounded answer (below 0: the "// &
+        "engine's default)", hi=1.0_qp, hi_open=.true.)
+    call cli%add_int("cap", "0", "the work budget of every run in collisions (0: the engine's "// &
+        "default, max(10^6, 100 p))", lo=0)
+    call read_keys(cli)
+    out = cli%get_word("out")
+    ps = [50.0_qp, 100.0_qp, 200.0_qp, 1.0e3_qp, 1.0e4_qp, 1.0e5_qp]
+    es = [0.2_qp, 0.3_qp, 0.5_qp, 0.7_qp, 0.8_qp, 0.9_qp, 0.95_qp]
+    if (cli%given("ps")) ps = cli%get_reals("ps")
+    if (cli%given("es")) es = cli%get_reals("es")
+    vtol = cli%get_real("vtol")
+    cap = cli%get_int("cap")
+    if (any(ps /= aint(ps))) call fail("c12-grid: ps = "//cli%get_text("ps")// &
+        ": allowed whole numbers")
+
+    call open_table(out, "collapse_grid.tsv", "p"//tab//"e"//tab//"answer"//tab//"status"// &
+        tab//"collisions"//tab//"v_bound[V]"//tab//"limits_certified"//tab// &
+        "limits_tolerance"//tab//"limits_bounded"//tab//"invariants"//tab//"struck_q0", &
+        unit, stat, msg)
+    call stop_unless_normal(stat, msg)
+    call open_table(out//"/timing", "collapse_grid.tsv", "p"//tab//"e"//tab//"run[s]", &
+        unit_time, stat, msg)
+    call stop_unless_normal(stat, msg)
+    do i = 1, size(ps)
+        p = nint(ps(i))
+        do j = 1, size(es)
+            call scene_init(scene, stat, msg, p=p, e=es(j))
+            call stop_unless_normal(stat, msg)
+            scene%max_collisions = cap
+            if (vtol >= 0) scene%vtol = vtol
+            call system_clock(c0, rate)
+            call simulate(scene, run)
+            call system_clock(c1)
+            call check_invariants(scene, run, slack, per_collision, why)
+            if (why == "") why = "hold"
+            write (unit, "(a)") itoa(p)//tab//short_text(es(j))//tab// &
+                answer_word(run%answer)//tab//status_word(run%status)//tab//itoa(run%n)//tab// &
+                real_str(run%v_bound, 2)//tab// &
+                itoa(run%limits%certified)//tab//itoa(run%limits%tolerance)//tab// &
+                itoa(run%limits%bounded)//tab//why//tab//q0_text(es(j))
+            write (unit_time, "(a)") itoa(p)//tab//short_text(es(j))//tab// &
+                short_text(real(c1 - c0, qp)/real(rate, qp), 3)
+            flush (unit)
+        end do
+    end do
+    call close_table(unit, stat, msg)
+    call stop_unless_written(stat, msg)
+    call close_table(unit_time, stat, msg)
+    call stop_unless_written(stat, msg)
+contains
+    !> The least length from which a struck block of equal spheres is proven
+    !> to merge at e (the struck rule's proof), or none.
+    function q0_text(e) result(text)
+        real(qp), intent(in) :: e
+        character(len=:), allocatable :: text
+        integer :: q0
+        q0 = struck_least(e)
+        text = "none"
+        if (q0 < huge(1)) text = itoa(q0)
+    end function q0_text
+end program c12_grid
