@@ -3,7 +3,8 @@
 #   make test            fpm test of the engine and of the study (installs missing
 #                        prerequisites first): the quick suite, each test a few seconds
 #   make test-long       the same tests in their deep versions (more cases, longer runs),
-#                        and 300 near-edge rows checked against the replay
+#                        300 near-edge rows checked against the replay, and every row of
+#                        the collapse grid again at a tenfold smaller vtol (make grid)
 #   make replay          ARGS="p=5 e=0.2593": the independent high-precision replay of a
 #                        scene (tools/replay, mpmath): separated or collapsed, to 1e-300
 #   make test-times      make test, then build/test-times.tsv: every test's wall time
@@ -224,16 +225,19 @@ mutants: prereqs ## the mutation check (tools/mutants): each small bug must fail
 
 # test-long adds the near-edge rows against the replay (tools/replay-check:
 # 300 rows, a few minutes on 2 cores) and a last line that counts both
-test-long: prereqs $(CLI_STAMP) ## the tests in their deep versions, and 300 near-edge rows against the replay
+test-long: prereqs $(CLI_STAMP) $(BUILD_STAMP) ## the tests in their deep versions, 300 near-edge rows against the replay, the collapse grid at a tenfold smaller vtol
 	@mkdir -p build
 	@set -o pipefail; status=0; \
 	$(MAKE) --no-print-directory test TEST_ARGS=long | tee build/test-long.log || status=1; \
 	bash .ci/prereqs replay; \
 	python3 tools/replay-check sphere_row=$(BIN)/sphere-row > build/test-replay.log 2>&1 \
 		|| status=1; cat build/test-replay.log; \
-	tail -n 1 build/test-long.log build/test-replay.log | awk '/^[0-9]+ passed, [0-9]+ failed$$/ \
-		{ p += $$1; f += $$3; n++ } END { f += 2 - n; printf "%d passed, %d failed\n", p, f; \
-		exit f > 0 }' && exit $$status
+	if $(BIN)/c12-grid again=0.1 out=build/grid-again > build/test-grid.log 2>&1; then \
+		echo "1 passed, 0 failed" >> build/test-grid.log; else status=1; \
+		echo "0 passed, 1 failed" >> build/test-grid.log; fi; cat build/test-grid.log; \
+	tail -q -n 1 build/test-long.log build/test-replay.log build/test-grid.log | \
+		awk '/^[0-9]+ passed, [0-9]+ failed$$/ { p += $$1; f += $$3; n++ } \
+		END { f += 3 - n; printf "%d passed, %d failed\n", p, f; exit f > 0 }' && exit $$status
 
 replay: ## the high-precision replay of a scene: ARGS="p=5 e=0.2593" (tools/replay, mpmath)
 	@bash .ci/prereqs replay

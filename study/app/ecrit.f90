@@ -154,6 +154,7 @@ contains
 
     !> ecrit.tsv: one row per p with the two ends of its edge (each with the
     !> width it is known to within and only the decimals that width earns),
+    !> the highest certified and the highest unproven collapse,
     !> the mixed band, the counts of the scan, the rate map where there is
     !> one (30 digits), the three fits of 1 - e_c, and the scan's highest
     !> certified and lowest separated points (20 digits: the points run, not
@@ -161,7 +162,8 @@ contains
     subroutine write_rows()
         integer :: j
         call open_table(out, "ecrit.tsv", "p"//tab//"e_collapse_max[1]"//tab// &
-            "collapse_width[1]"//tab//"e_certified_max[1]"//tab//"e_finite_min[1]"//tab// &
+            "collapse_width[1]"//tab//"e_certified_max[1]"//tab//"e_unproven_max[1]"//tab// &
+            "e_finite_min[1]"//tab// &
             "finite_width[1]"//tab// &
             "band"//tab//"band_points"//tab//"band_collapse_share"//tab//"points"//tab// &
             "separated"//tab//"certified"//tab//"unproven"//tab//"undecided"//tab// &
@@ -178,6 +180,7 @@ contains
                     g%collapse_max >= 0.0_qp)//tab// &
                     optional_text(real_str(g%collapse_width, 2), g%collapse_max >= 0.0_qp)//tab// &
                     optional_text(grid_text(r, g%certified_max), g%certified_max >= 0.0_qp)//tab// &
+                    optional_text(grid_text(r, g%unproven_max), g%unproven_max >= 0.0_qp)//tab// &
                     optional_text(decimal_text(g%finite_min, g%finite_digits), &
                     g%finite_min <= 1.0_qp)//tab// &
                     optional_text(real_str(g%finite_width, 2), g%finite_min <= 1.0_qp)//tab// &

@@ -21,11 +21,11 @@ program c12_grid
     type(cli_t) :: cli
     character(len=:), allocatable :: out
     real(qp), allocatable :: ps(:), es(:)
-    real(qp) :: vtol
-    integer :: cap, unit, unit_time, stat, i, j, p
+    real(qp) :: vtol, again, gap
+    integer :: cap, unit, unit_time, unit_again, stat, i, j, p, disagree
     character(len=300) :: msg
     type(scene_t) :: scene
-    type(run_t) :: run
+    type(run_t) :: run, second
     character(len=:), allocatable :: why
     integer(int64) :: c0, c1, rate
 
@@ -42,6 +42,9 @@ program c12_grid
         "engine's default)", hi=1.0_qp, hi_open=.true.)
     call cli%add_int("cap", "0", "the work budget of every run in collisions (0: the engine's "// &
         "default, max(10^6, 100 p))", lo=0)
+    call cli%add_real("again", "0", "above 0: every row run again at vtol times this, and "// &
+        "OUT/collapse_grid_again.tsv says whether the two answers' velocities agree within "// &
+        "the sum of their bounds", lo=0.0_qp, hi=1.0_qp, hi_open=.true.)
     call read_keys(cli)
     out = cli%get_word("out")
     ps = [50.0_qp, 100.0_qp, 200.0_qp, 1.0e3_qp, 1.0e4_qp, 1.0e5_qp]
@@ -50,6 +53,7 @@ program c12_grid
     if (cli%given("es")) es = cli%get_reals("es")
     vtol = cli%get_real("vtol")
     cap = cli%get_int("cap")
+    again = cli%get_real("again")
     if (any(ps /= aint(ps))) call fail("c12-grid: ps = "//cli%get_text("ps")// &
         ": allowed whole numbers")
 
@@ -61,6 +65,13 @@ program c12_grid
     call open_table(out//"/timing", "collapse_grid.tsv", "p"//tab//"e"//tab//"run[s]", &
         unit_time, stat, msg)
     call stop_unless_normal(stat, msg)
+    if (again > 0) then
+        call open_table(out, "collapse_grid_again.tsv", "p"//tab//"e"//tab//"answer"//tab// &
+            "v_bound[V]"//tab//"answer_again"//tab//"v_bound_again[V]"//tab// &
+            "difference[V]"//tab//"agree", unit_again, stat, msg)
+        call stop_unless_normal(stat, msg)
+    end if
+    disagree = 0
     do i = 1, size(ps)
         p = nint(ps(i))
         do j = 1, size(es)
@@ -81,13 +92,40 @@ program c12_grid
             write (unit_time, "(a)") itoa(p)//tab//short_text(es(j))//tab// &
                 short_text(real(c1 - c0, qp)/real(rate, qp), 3)
             flush (unit)
+            if (again > 0) call run_again()
         end do
     end do
     call close_table(unit, stat, msg)
     call stop_unless_written(stat, msg)
+    if (again > 0) then
+        call close_table(unit_again, stat, msg)
+        call stop_unless_written(stat, msg)
+        write (*, "(a)") "c12-grid: "//itoa(size(ps)*size(es) - disagree)//" agree, "// &
+            itoa(disagree)//" differ at vtol times "//short_text(again)
+        if (disagree > 0) call fail("c12-grid: "//itoa(disagree)//" rows differ by more "// &
+            "than the sum of their bounds at vtol times "//short_text(again))
+    end if
     call close_table(unit_time, stat, msg)
     call stop_unless_written(stat, msg)
 contains
+    !> The row once more at vtol times `again`: its velocities must lie within
+    !> the sum of the two bounds of the first run's, sphere by sphere.
+    subroutine run_again()
+        type(scene_t) :: deeper
+        logical :: agree
+        deeper = scene
+        deeper%vtol = scene%vtol*again
+        call simulate(deeper, second)
+        gap = maxval(abs(second%v - run%v) - (second%v_bounds + run%v_bounds))
+        agree = gap <= 0
+        if (.not. agree) disagree = disagree + 1
+        write (unit_again, "(a)") itoa(p)//tab//short_text(es(j))//tab// &
+            answer_word(run%answer)//tab//real_str(run%v_bound, 2)//tab// &
+            answer_word(second%answer)//tab//real_str(second%v_bound, 2)//tab// &
+            real_str(maxval(abs(second%v - run%v)), 2)//tab//merge("yes", "no ", agree)
+        flush (unit_again)
+    end subroutine run_again
+
     !> The least length from which a struck block of equal spheres is proven
     !> to merge at e (the struck rule's proof), or none.
     function q0_text(e) result(text)

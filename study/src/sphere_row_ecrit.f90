@@ -203,6 +203,10 @@ module sphere_row_ecrit
         !> as collapse_max (only a proven collapse counts as one), which the
         !> table writes once at its width's decimals and once with one more.
         real(qp) :: certified_max = -1.0_qp
+        !> Highest point whose collapse is unproven (merged at tolerance or
+        !> bounded, with its bound; -1 if none): where nothing is certified,
+        !> the top of the collapse side the scan can state.
+        real(qp) :: unproven_max = -1.0_qp
         !> True if finite_min < collapse_max: a proven collapse above a
         !> separation, outcomes mixing over that band of band_points points,
         !> band_collapses of them proven collapses.
@@ -454,6 +458,8 @@ contains
         i_f = findloc(outcomes, outcome_finite, dim=1)
         k = findloc(outcomes, outcome_certified, dim=1, back=.true.)
         if (k > 0) edge%certified_max = at(k)
+        k = findloc(outcomes, outcome_unproven, dim=1, back=.true.)
+        if (k > 0) edge%unproven_max = at(k)
         if (i_c > 0) then
             j_c = i_c
             do while (j_c < n)
