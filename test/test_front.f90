@@ -868,8 +868,8 @@ contains
             //"more than its bound leaves: "//plain(:200))
         if (allocated(error)) return
         call run_program("p=7 e=0.3936 precision=dp tol=1.93e-34", status, fine, err)
-        call check(error, status == 0 .and. index(plain, "collisions 335"//new_line("a")) == 1 &
-            .and. index(fine, "collisions 733"//new_line("a")) == 1, "collisions at the two " &
+        call check(error, status == 0 .and. index(plain, "collisions 343"//new_line("a")) == 1 &
+            .and. index(fine, "collisions 740"//new_line("a")) == 1, "collisions at the two " &
             //"tolerances: "//plain(:index(plain, new_line("a"))) &
             //fine(:index(fine, new_line("a"))))
     end subroutine test_dp_tol

@@ -68,6 +68,16 @@ module sphere_row_policy
         !> pattern, which at p = 100, e = 0.8 take about 450,000 collisions
         !> with it).
         integer :: settle_share = 4
+        ! ---- a group below tol followed on its own scale (follow_group) ----
+        !> The nested run's tol is tol^follow_depth (chosen: 8 times real(16)'s
+        !> 34 decades, as deep as tol = 1e-270); the most spheres of a group
+        !> followed; and the collisions of all nested runs of a run together,
+        !> at most follow_most and at most follow_depth - 1 times those of the
+        !> run so far (derived: as many collisions for each further tol of
+        !> depth as the run took to come down to tol; so a row near its edge
+        !> whose rates fall at a steady rate per collision is followed to
+        !> tol^8, and none costs more than follow_depth times its own run).
+        integer :: follow_depth = 8, follow_spheres = 64, follow_most = 20000
 
         ! ---- the touching block: its proof (box) and its tries ----
         !> Collisions next to a closed gap before a cascade through touching
