@@ -5,7 +5,7 @@ module test_collapse
     use sphere_row, only: qp, dp, scene_t, run_t, event_log_t, scene_init, simulate, &
         kinetic_energy, momentum, status_normal, status_collapsed, status_max_collisions, str, &
         itoa, answer_exact, answer_certified, answer_tolerance, answer_bounded, collapse_proven, &
-        answer_unresolved, answer_word
+        answer_unresolved, answer_word, struck_least
     use sphere_row_cascade, only: cascade_jump
     use testsuite, only: error_t, unittest_t, new_unittest, check, seed_random, cases
     implicit none
@@ -228,6 +228,8 @@ contains
             new_unittest("touching_cascade_matches_fallback", test_touching_cascade), &
             new_unittest("light_spheres_between_heavy", test_light_between_heavy), &
             new_unittest("long_rows_answer", test_long_rows), &
+            new_unittest("struck_blocks_absorb_in_constant_work", test_struck_sweep), &
+            new_unittest("struck_block_proof_by_hand", test_struck_least), &
             new_unittest("cascade_jump_equals_stepping", test_cascade_jump), &
             new_unittest("shuttle_in_touching_row", test_shuttle_row), &
             new_unittest("touching_block_in_the_engines_order", test_block_in_order), &
@@ -735,6 +737,97 @@ contains
             if (allocated(error)) return
         end do
     end subroutine test_long_rows
+
+    !> The quasi-plastic sweep of a long struck row: a merged block of B equal
+    !> spheres at v0/B absorbs the next sphere, one collision and one limit a
+    !> sphere (sphere_row_struck.inc), the limit proven for every B >= 36 at
+    !> e <= 0.7 by one box: 20,000 spheres at e = 0.2 and 0.5 end within 10,000
+    !> collisions more than one a sphere (the front's forming; a proof of each
+    !> block's merge by its own box, as before, cost O(B) a sphere), every sphere at v0/p, the momentum kept,
+    !> the last absorption at t = p(p - 1)/2 (the block of B reaches sphere B +
+    !> 1, a gap of 1 ahead, in time B), and at e = 0.2 the collapse proven.
+    subroutine test_struck_sweep(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(scene_t) :: scene
+        type(run_t) :: run
+        integer :: stat, i
+        integer, parameter :: p = 20000
+        real(qp), parameter :: e_values(2) = [0.2_qp, 0.5_qp]
+        character(len=200) :: msg
+        do i = 1, size(e_values)
+            call scene_init(scene, stat, msg, p=p, e=e_values(i))
+            call simulate(scene, run)
+            call check(error, run%status == status_collapsed .and. run%n < p + 10000 .and. &
+                run%limits%certified > p - 100, "e = "//str(e_values(i))//": "// &
+                itoa(run%n)//" collisions, "//itoa(run%limits%certified)//" certified limits")
+            if (allocated(error)) return
+            call check(error, all(abs(run%v - 1.0_qp/p) <= run%v_bounds) .and. &
+                abs(momentum(scene, run%v) - 1) <= 1.0e-25_qp .and. &
+                abs(run%t_end - real(p, qp)*(p - 1)/2) <= 1.0e-20_qp*p*p, "e = " &
+                //str(e_values(i))//": velocities, momentum or t_end "//str(run%t_end))
+            if (allocated(error)) return
+        end do
+        call check(error, collapse_proven(run) .eqv. .false., "e = 0.5: its front merges at tol")
+        call scene_init(scene, stat, msg, p=p, e=0.2_qp)
+        call simulate(scene, run)
+        call check(error, collapse_proven(run) .and. run%answer == answer_certified, &
+            "e = 0.2: the collapse not proven")
+    end subroutine test_struck_sweep
+
+    !> The proof that a struck block merges, for every length from q0 on
+    !> (struck_least), against the cascade itself: at e = 0.5 q0 = 36, and the
+    !> cascade at one instant of a block of q0 ... q0 + 3 equal spheres struck
+    !> at an end, run in the engine's order (the largest approach first)
+    !> for 200,000 collisions, keeps every momentum excess S_j positive, as the
+    !> proof says it does for ever; at e = 0 every block merges (q0 = 2); from
+    !> e = 0.93 on no q0 is found, and at e = 0.95 a block of 100 spheres
+    !> separates within 10,000 collisions.
+    subroutine test_struck_least(error)
+        type(error_t), allocatable, intent(out) :: error
+        integer :: q
+        logical :: ends
+        call check(error, struck_least(0.5_qp) == 36 .and. struck_least(0.0_qp) == 2 .and. &
+            struck_least(0.95_qp) == huge(1), "q0 at 0.5, 0, 0.95: "// &
+            itoa(struck_least(0.5_qp))//" "//itoa(struck_least(0.0_qp)))
+        if (allocated(error)) return
+        do q = 36, 39
+            call struck_cascade(0.5_qp, q, 200000, ends)
+            call check(error, .not. ends, "e = 0.5: a struck block of "//itoa(q)//" ends")
+            if (allocated(error)) return
+        end do
+        call struck_cascade(0.95_qp, 100, 10000, ends)
+        call check(error, ends, "e = 0.95: a struck block of 100 does not separate")
+    contains
+        !> The cascade at one instant of q equal spheres, q - 1 at velocity 1
+        !> and the last at 0, in the engine's order, for at most `most`
+        !> collisions: whether it ends (no pair approaching) or a momentum
+        !> excess S_j reaches 0 first.
+        subroutine struck_cascade(e, q, most, ends)
+            real(qp), intent(in) :: e
+            integer, intent(in) :: q, most
+            logical, intent(out) :: ends
+            real(qp) :: u(q), d
+            integer :: n, c, j
+            u = 1
+            u(q) = 0
+            ends = .true.
+            do n = 1, most
+                c = maxloc(u(:q - 1) - u(2:), 1)
+                d = u(c) - u(c + 1)
+                if (.not. d > 0) return
+                u(c) = u(c) - (1 + e)/2*d
+                u(c + 1) = u(c + 1) + (1 + e)/2*d
+                ! (the excesses of the prefixes, about the mean)
+                if (mod(n, 1000) == 0) then
+                    do j = 1, q - 1
+                        if (.not. sum(u(:j)) - j*sum(u)/q > 0) return
+                    end do
+                    u = (u - sum(u)/q)/maxval(abs(u - sum(u)/q)) + 1
+                end if
+            end do
+            ends = .false.
+        end subroutine struck_cascade
+    end subroutine test_struck_least
 
     !> A light sphere shuttling between two heavy ones while other contacts
     !> wait: the jump over the shuttle's periods (doubling its period map)
