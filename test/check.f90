@@ -10,6 +10,7 @@ program check
     use test_front, only: collect_front
     use test_limits, only: collect_limits
     use test_replays, only: collect_replays
+    use test_labels, only: collect_labels
     implicit none
     integer :: passed, failed
     passed = 0
@@ -20,6 +21,7 @@ program check
     call run_tests("calendar", collect_calendar(), passed, failed)
     call run_tests("limits", collect_limits(), passed, failed)
     call run_tests("replays", collect_replays(), passed, failed)
+    call run_tests("labels", collect_labels(), passed, failed)
     call run_tests("auto", collect_auto(), passed, failed)
     call run_tests("front", collect_front(), passed, failed)
     call run_tests("cli", collect_cli(), passed, failed)

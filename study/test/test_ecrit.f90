@@ -2,10 +2,11 @@
 !> collapse cycle against the closed forms of p = 3 and p = 4, the scanned
 !> edge around them, e_c growing with p, and what a scan says of its edge.
 module test_ecrit
-    use sphere_row, only: qp, str, itoa, status_normal
+    use sphere_row, only: qp, dp, str, itoa, status_normal, scene_t, run_t, scene_dp_t, &
+        run_dp_t, scene_init, simulate
     use sphere_row_ecrit, only: ecrit_settings_t, ecrit_row_t, ecrit_row, rate_map_critical, &
         edge_t, edge_of, digits_of, decimal_text, outcome_certified, outcome_unproven, &
-        outcome_finite, outcome_undecided
+        outcome_finite, outcome_undecided, outcome_of, outcome_word
     use testsuite, only: error_t, unittest_t, new_unittest, check
     implicit none
     private
@@ -27,7 +28,8 @@ contains
             new_unittest("rate_map_cycle_p4", test_map_p4), &
             new_unittest("rows_3_and_4", test_rows), &
             new_unittest("e_crit_increases", test_increasing), &
-            new_unittest("edge_of_a_scan", test_edge_of) &
+            new_unittest("edge_of_a_scan", test_edge_of), &
+            new_unittest("outcome_told_by_the_labels", test_outcome_of) &
             ]
     end function collect_ecrit
 
@@ -115,6 +117,93 @@ contains
             last = g%finite_min
         end do
     end subroutine test_increasing
+
+    !> A point's outcome is what its run's labels prove, never its count:
+    !> separated only where the run ended normally with an exact answer,
+    !> certified only where collapse_proven holds. Each scene has one label
+    !> that decides: a separation (p = 4, e = 0.2), a certified cycle
+    !> (e = 0.1), groups merged at tolerance and nothing else (a heavy sphere
+    !> striking light ones), a bounded cascade (a touching row of 20 with the
+    !> closed forms off), certified limits but a collision passed over below
+    !> tol (a row near p = 8's edge; at tol = 1e-60 it takes more collisions),
+    !> a normal end with a pair still closing slower than tol v0 (p = 3,
+    !> e = 1/2, tol = 0.3: spheres 1 and 2 close at v0/16 after two
+    !> collisions), and the budget spent; in real64 the first, the second and
+    !> the normal end at tolerance again.
+    subroutine test_outcome_of(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(scene_t) :: scene
+        type(run_t) :: run
+        type(scene_dp_t) :: scene_dp
+        type(run_dp_t) :: run_dp
+        integer :: stat
+        character(len=200) :: msg
+        call scene_init(scene, stat, msg, p=4, e=0.2_qp)
+        call expect("p=4 e=0.2", outcome_finite)
+        if (allocated(error)) return
+        call scene_init(scene, stat, msg, p=4, e=0.1_qp)
+        call expect("p=4 e=0.1", outcome_certified)
+        if (allocated(error)) return
+        call scene_init(scene, stat, msg, p=4, e=0.555963_qp, &
+            masses=[18.25_qp, 0.04349_qp, 0.02667_qp, 0.2489_qp], &
+            gaps=[0.6196_qp, 0.0_qp, 1.546_qp])
+        call expect("merged at tolerance", outcome_unproven)
+        if (allocated(error)) return
+        call check(error, run%limits%tolerance > 0 .and. run%limits%certified == 0 .and. &
+            run%limits%bounded == 0, "merged at tolerance: the premise, limits at tolerance "// &
+            "alone, does not hold")
+        if (allocated(error)) return
+        call scene_init(scene, stat, msg, p=20, e=0.5_qp, gaps=spread(0.0_qp, 1, 19))
+        scene%closed_form_limits = .false.
+        scene%vtol = 1.0e-6_qp
+        call expect("bounded cascade", outcome_unproven)
+        if (allocated(error)) return
+        call check(error, run%limits%bounded > 0 .and. run%limits%tolerance == 0, &
+            "bounded cascade: the premise, a bounded limit alone, does not hold")
+        if (allocated(error)) return
+        call scene_init(scene, stat, msg, p=8, e=0.427873_qp, masses=[67.09_qp, 1.965_qp, &
+            1.002_qp, 1.569_qp, 1.526_qp, 1.79_qp, 1.805_qp, 1.102_qp], gaps=[1.046_qp, &
+            1.121_qp, 1.486_qp, 0.0_qp, 0.03103_qp, 0.0_qp, 0.5512_qp])
+        call expect("certified limits, a pass below tol", outcome_unproven)
+        if (allocated(error)) return
+        call check(error, run%limits%n > 0 .and. run%limits%certified == run%limits%n .and. &
+            run%clock%passed, "certified limits, a pass below tol: the premise does not hold")
+        if (allocated(error)) return
+        call scene_init(scene, stat, msg, p=3, e=0.5_qp, tol=0.3_qp)
+        call expect("p=3 e=0.5 tol=0.3", outcome_undecided)
+        if (allocated(error)) return
+        call check(error, run%status == status_normal .and. run%limits%n == 0, &
+            "p=3 e=0.5 tol=0.3: the premise, a normal end without limits, does not hold")
+        if (allocated(error)) return
+        call scene_init(scene, stat, msg, p=4, e=0.1_qp, max_collisions=20)
+        call expect("p=4 e=0.1 max_collisions=20", outcome_undecided)
+        if (allocated(error)) return
+        call scene_init(scene_dp, stat, msg, p=4, e=0.2_dp)
+        call expect_dp("real64 p=4 e=0.2", outcome_finite)
+        if (allocated(error)) return
+        call scene_init(scene_dp, stat, msg, p=4, e=0.1_dp)
+        call expect_dp("real64 p=4 e=0.1", outcome_certified)
+        if (allocated(error)) return
+        call scene_init(scene_dp, stat, msg, p=3, e=0.5_dp, tol=0.3_dp)
+        call expect_dp("real64 p=3 e=0.5 tol=0.3", outcome_undecided)
+    contains
+        !> Run `scene`; its outcome must be `expected`.
+        subroutine expect(name, expected)
+            character(len=*), intent(in) :: name
+            integer, intent(in) :: expected
+            call simulate(scene, run)
+            call check(error, outcome_of(run) == expected, name//": outcome "// &
+                outcome_word(outcome_of(run))//", expected "//outcome_word(expected))
+        end subroutine expect
+        !> Run `scene_dp`; its outcome must be `expected`.
+        subroutine expect_dp(name, expected)
+            character(len=*), intent(in) :: name
+            integer, intent(in) :: expected
+            call simulate(scene_dp, run_dp)
+            call check(error, outcome_of(run_dp) == expected, name//": outcome "// &
+                outcome_word(outcome_of(run_dp))//", expected "//outcome_word(expected))
+        end subroutine expect_dp
+    end subroutine test_outcome_of
 
     !> edge_of on a made-up scan of 11 points over [0, 1] (h = 0.1): the ends,
     !> the widths that unproven and undecided points add (an unproven merge is
