@@ -261,10 +261,17 @@ contains
             //"; allowed v0 >= "//short_text(t1/big, 3, "up"))
     end subroutine refuse_time
 
-    !> x is a finite number (not an infinity, not a NaN).
+    !> x is a finite number (not an infinity, not a NaN): for binary128 its
+    !> exponent field is not all ones, told from its bits (a comparison of
+    !> real(16) is a call, three a sphere of a long row's answer).
     elemental logical function finite(x)
         real(qp), intent(in) :: x
-        finite = abs(x) <= huge(x)
+        integer, parameter :: i16 = selected_int_kind(38)
+        if (digits(x) == 113 .and. maxexponent(x) == 16384) then
+            finite = iand(shiftr(transfer(x, 1_i16), 112), 32767_i16) /= 32767_i16
+        else
+            finite = abs(x) <= huge(x)
+        end if
     end function finite
 
     !> Every element of xs is finite, looked at in place (a long row's
@@ -304,10 +311,15 @@ contains
         else
             call out%put("precision "//precision_word)
         end if
-        bound = 0
-        do j = 1, size(run%v)
-            bound = max(bound, sphere_bound(j))
-        end do
+        ! (the run's v_bound is its spheres' largest; auto's certificate may
+        ! lower some of them)
+        bound = run%v_bound
+        if (precision_word == "auto") then
+            bound = 0
+            do j = 1, size(run%v)
+                bound = max(bound, sphere_bound(j))
+            end do
+        end if
         call out%put("answer "//answer_word(run%answer))
         call out%put("v_bound "//real_str(bound, 2))
         if (run%limits%n > 0) then
@@ -355,8 +367,13 @@ contains
     !> put_numbered's: a long row's answer has a million.
     subroutine write_velocities()
         real(qp) :: bound
-        integer :: i, digits, place, q, n_text
-        character(len=number_text_length) :: text
+        integer :: i, digits, place, q, n_text, last_q, last_place, n_last
+        character(len=number_text_length) :: text, last
+        ! (the last q 10^place written: a long row's zero velocities share
+        ! their bound's decade, sphere after sphere)
+        n_last = 0
+        last_q = 0
+        last_place = 0
         do i = 1, size(run%v)
             bound = sphere_bound(i)
             if (.not. (bound > 0 .and. bound <= huge(bound))) then
@@ -381,7 +398,13 @@ contains
                         place = place + 1
                     end if
                 end if
-                call power_text(q, place, text, n_text)
+                if (n_last == 0 .or. q /= last_q .or. place /= last_place) then
+                    call power_text(q, place, last, n_last)
+                    last_q = q
+                    last_place = place
+                end if
+                text = last
+                n_text = n_last
             end if
             call put_line("v", i, text(:n_text))
         end do
@@ -416,8 +439,10 @@ contains
         integer, intent(in) :: i
         bound = run%v_bound
         if (allocated(run%v_bounds)) bound = run%v_bounds(i)
-        if (precision_word == "auto" .and. auto%certified .and. run%answer == answer_exact) then
-            if (allocated(auto%v_bounds)) bound = min(bound, auto%v_bounds(i))
+        ! (auto's flag first: the words are compared only where it is set)
+        if (auto%certified) then
+            if (precision_word == "auto" .and. run%answer == answer_exact .and. &
+                allocated(auto%v_bounds)) bound = min(bound, auto%v_bounds(i))
         end if
     end function sphere_bound
 
@@ -428,8 +453,11 @@ contains
     pure integer function decade(x)
         real(qp), intent(in) :: x
         real(dp) :: l
-        if (x >= tiny(1.0_dp) .and. x <= huge(1.0_dp)) then
-            l = log10(real(x, dp))
+        ! (the range told in real(8), where a comparison is no call: x rounded
+        ! into tiny or huge of real(8) has their decade)
+        l = real(x, dp)
+        if (l >= tiny(1.0_dp) .and. l <= huge(1.0_dp)) then
+            l = log10(l)
             if (abs(l - anint(l)) > 1.0e-9_dp) then
                 decade = floor(l)
                 return
