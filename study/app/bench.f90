@@ -375,13 +375,49 @@ contains
         write (unit, "(a)") "whole.p1e6_e1.loop_seconds"//tab//real_str(tb, 3)//tab//"s"//tab// &
             "c12-tight-loop p=1000000 e=1 (real(16), one-real clock, no output), in turn with it"
         write (unit, "(a)") "whole.p1e6_e1.ratio"//tab//real_str(ratio, 3)//tab//"1"//tab// &
-            "median of the pairs' ratios; target at most 3"
+            "median of the pairs' ratios; target at most 3.5"
+        call peaks_of("sphere-row p=1000000 e=1", "c12-tight-loop p=1000000 e=1")
         if (engine_ns_p1e6 > 0) write (unit, "(a)") "whole.p1e6_e1.not_the_run_seconds"//tab &
             //real_str(ta - 999999*engine_ns_p1e6*1.0e-9_qp, 3)//tab//"s"//tab//"the process " &
             //"above less its run (999,999 collisions at the engine's "//real_str(engine_ns_p1e6, &
             3)//" ns in cost_vs_loop.tsv): reading, setting up, writing 3 10^6 numbers with " &
             //"every digit; target for the output at most 0.5"
     end subroutine whole_process
+
+    !> The peak memory (the largest resident set) of `command` and of the
+    !> loop's `loop_command`, each run once more, as GNU time reports it
+    !> (/usr/bin/time -f %M); no rows where it is not installed.
+    subroutine peaks_of(command, loop_command)
+        character(len=*), intent(in) :: command, loop_command
+        real(qp) :: engine_mib, loop_mib
+        engine_mib = peak_mib(bin//"/"//command)
+        loop_mib = peak_mib(bin//"/"//loop_command)
+        if (engine_mib <= 0 .or. loop_mib <= 0) return
+        write (unit, "(a)") "whole.p1e6_e1.peak_mib"//tab//real_str(engine_mib, 4)//tab//"MiB" &
+            //tab//command//", the largest resident set (/usr/bin/time -f %M)"
+        write (unit, "(a)") "whole.p1e6_e1.loop_peak_mib"//tab//real_str(loop_mib, 4)//tab// &
+            "MiB"//tab//loop_command//", the same"
+        write (unit, "(a)") "whole.p1e6_e1.peak_ratio"//tab//real_str(engine_mib/loop_mib, 3)// &
+            tab//"1"//tab//"the two peaks' ratio; target at most 2.5"
+    end subroutine peaks_of
+
+    !> The largest resident set of a command in MiB, 0 if it cannot be told.
+    function peak_mib(command) result(mib)
+        character(len=*), intent(in) :: command
+        real(qp) :: mib
+        character(len=*), parameter :: record = "build/bench-runs/peak"
+        integer :: u, ios, exitstat, cmdstat
+        integer(int64) :: kib
+        mib = 0
+        call execute_command_line("/usr/bin/time -f %M -o "//record//" "//command// &
+            " > /dev/null 2>&1", exitstat=exitstat, cmdstat=cmdstat)
+        if (cmdstat /= 0 .or. exitstat /= 0) return
+        open (newunit=u, file=record, status="old", action="read", iostat=ios)
+        if (ios /= 0) return
+        read (u, *, iostat=ios) kib
+        close (u)
+        if (ios == 0) mib = real(kib, qp)/1024
+    end function peak_mib
 
     !> The value of row `key` of an answer table, copied as a row of
     !> bench.tsv with the note `note` (nothing if the table has no such row).
