@@ -356,8 +356,10 @@ $(COST) &: $(BUILD_STAMP)
 $(RESULTS)/answers.tsv $(RESULTS)/summary.md &: $(ANSWERS) $(BUILD_STAMP)
 	$(BIN)/c12-summary out=$(RESULTS)
 
+# BENCH_PARTS=loop,whole measures only those parts of bench.tsv anew and keeps
+# the other rows as they were (c12-bench parts=...)
 $(RESULTS)/bench.tsv: $(BUILD_STAMP) $(CLI_STAMP) $(TABLES) $(COST)
-	$(BIN)/c12-bench out=$(RESULTS)
+	$(BIN)/c12-bench out=$(RESULTS) $(if $(BENCH_PARTS),parts=$(BENCH_PARTS))
 
 # figures: the script is a prerequisite of its figure
 $(RESULTS)/%.png: study/%.gp

@@ -31,6 +31,10 @@ program sphere_row_main
     !> real(8)'s where it answered (precision=dp, or auto in real(8)); no
     !> number is written with more digits than its kind holds.
     integer :: precision_digits = precision(1.0_qp) + 1
+    !> The number of the last output line, i, and its digits, the last
+    !> place_length characters of place_text (count_to).
+    integer :: place_value = -1, place_length = 0
+    character(len=number_text_length) :: place_text = ""
 
     call define_keys()
     call read_command_line(cli)
@@ -212,19 +216,20 @@ contains
         if (precision_word == "dp") kind_name = "real(8)"
         length_key = "d"
         if (maxval(scene%a) > scene%d) length_key = merge("gaps", "a   ", cli%given("gaps"))
-        if (run%status == status_invalid .or. .not. finite([run%t_end, run%limits%t])) then
+        if (run%status == status_invalid .or. .not. (finite(run%t_end) .and. &
+            finite(run%limits%t))) then
             call refuse_time(kind_name, error)
             if (.not. allocated(error) .and. run%status == status_invalid) then
                 call fatal_error(error, trim(run%message))
             end if
             return
         end if
-        if (.not. finite(run%v)) then
+        if (.not. all_finite(run%v)) then
             call fatal_error(error, "v0 = "//printable(cli%get_text("v0"))//": the run's " &
                 //"velocities overflow "//kind_name//"; allowed a smaller v0")
             return
         end if
-        if (.not. finite([run%x, run%y])) then
+        if (.not. (all_finite(run%x) .and. all_finite(run%y))) then
             call fatal_error(error, trim(length_key)//" = "//printable(cli%get_text( &
                 trim(length_key)))//": the run's positions overflow "//kind_name &
                 //"; allowed a shorter row")
@@ -248,7 +253,7 @@ contains
         call run_scene(unit_speed, check)
         if (check%status == status_invalid) return
         t1 = max(check%t_end, check%limits%t)
-        if (.not. finite([t1])) return
+        if (.not. finite(t1)) return
         big = huge(1.0_qp)
         if (precision_word == "dp") big = real(huge(1.0_dp), qp)
         call fatal_error(error, "v0 = "//printable(cli%get_text("v0"))//": the run's " &
@@ -256,10 +261,30 @@ contains
             //"; allowed v0 >= "//short_text(t1/big, 3, "up"))
     end subroutine refuse_time
 
-    pure logical function finite(xs)
-        real(qp), intent(in) :: xs(:)
-        finite = all(abs(xs) <= huge(xs))
+    !> x is a finite number (not an infinity, not a NaN): for binary128 its
+    !> exponent field is not all ones, told from its bits (a comparison of
+    !> real(16) is a call, three a sphere of a long row's answer).
+    elemental logical function finite(x)
+        real(qp), intent(in) :: x
+        integer, parameter :: i16 = selected_int_kind(38)
+        if (digits(x) == 113 .and. maxexponent(x) == 16384) then
+            finite = iand(shiftr(transfer(x, 1_i16), 112), 32767_i16) /= 32767_i16
+        else
+            finite = abs(x) <= huge(x)
+        end if
     end function finite
+
+    !> Every element of xs is finite, looked at in place (a long row's
+    !> answer holds millions: no array made of them).
+    pure logical function all_finite(xs)
+        real(qp), intent(in) :: xs(:)
+        integer :: i
+        all_finite = .false.
+        do i = 1, size(xs)
+            if (.not. finite(xs(i))) return
+        end do
+        all_finite = .true.
+    end function all_finite
 
     !> The answer, one quantity per line, collected by `out` (whose every
     !> write is checked at its finish): how it ended, what holds in exact
@@ -286,10 +311,15 @@ contains
         else
             call out%put("precision "//precision_word)
         end if
-        bound = 0
-        do j = 1, size(run%v)
-            bound = max(bound, sphere_bound(j))
-        end do
+        ! (the run's v_bound is its spheres' largest; auto's certificate may
+        ! lower some of them)
+        bound = run%v_bound
+        if (precision_word == "auto") then
+            bound = 0
+            do j = 1, size(run%v)
+                bound = max(bound, sphere_bound(j))
+            end do
+        end if
         call out%put("answer "//answer_word(run%answer))
         call out%put("v_bound "//real_str(bound, 2))
         if (run%limits%n > 0) then
@@ -333,12 +363,17 @@ contains
     !> of real(16) where it is 0 (no bound known) or not finite, else the
     !> digits down to the bound's leading one; a velocity below that decade
     !> reads rounded there, as -1, 0 or 1 times its power of ten (sphere_bound
-    !> gives each sphere's bound).
+    !> gives each sphere's bound). Each line is assembled in place, as
+    !> put_numbered's: a long row's answer has a million.
     subroutine write_velocities()
         real(qp) :: bound
-        integer :: i, digits, place, q
-        character(len=:), allocatable :: text
-        character(len=16) :: buffer
+        integer :: i, digits, place, q, n_text, last_q, last_place, n_last
+        character(len=number_text_length) :: text, last
+        ! (the last q 10^place written: a long row's zero velocities share
+        ! their bound's decade, sphere after sphere)
+        n_last = 0
+        last_q = 0
+        last_place = 0
         do i = 1, size(run%v)
             bound = sphere_bound(i)
             if (.not. (bound > 0 .and. bound <= huge(bound))) then
@@ -349,26 +384,52 @@ contains
             digits = 0
             if (run%v(i) /= 0) digits = min(precision_digits, decade(abs(run%v(i))) - place + 1)
             if (digits >= 2) then
-                text = real_str(run%v(i), digits)
+                call real_text(run%v(i), digits, text, n_text)
             else
-                ! (10^-place in two factors: each within range at every scale)
-                q = nint(run%v(i)*10.0_qp**(-place/2)*10.0_qp**(place/2 - place))
-                ! (0.96 at a bound's decade of 0.1 rounds to 1E+00, not 10E-01)
-                if (abs(q) == 10) then
-                    q = q/10
-                    place = place + 1
+                ! (a velocity of 0, the most of a long elastic row's, needs
+                ! no power of ten)
+                q = 0
+                if (run%v(i) /= 0) then
+                    ! (10^-place in two factors: each within range at every scale)
+                    q = nint(run%v(i)*10.0_qp**(-place/2)*10.0_qp**(place/2 - place))
+                    ! (0.96 at a bound's decade of 0.1 rounds to 1E+00, not 10E-01)
+                    if (abs(q) == 10) then
+                        q = q/10
+                        place = place + 1
+                    end if
                 end if
-                ! the exponent in two places, or four beyond 99, as str's
-                if (abs(place) < 100) then
-                    write (buffer, '(i0, "E", sp, i3.2)') q, place
-                else
-                    write (buffer, '(i0, "E", sp, i5.4)') q, place
+                if (n_last == 0 .or. q /= last_q .or. place /= last_place) then
+                    call power_text(q, place, last, n_last)
+                    last_q = q
+                    last_place = place
                 end if
-                text = trim(buffer)
+                text = last
+                n_text = n_last
             end if
-            call out%put("v"//itoa(i)//" "//text)
+            call put_line("v", i, text(:n_text))
         end do
     end subroutine write_velocities
+
+    !> The text `<q>E<place>` of q 10^place, the exponent signed in two places,
+    !> or four beyond 99, as real_str writes one: 1E-02, -1E+00, 0E-33.
+    pure subroutine power_text(q, place, text, length)
+        integer, intent(in) :: q, place
+        character(len=number_text_length), intent(out) :: text
+        integer, intent(out) :: length
+        character(len=number_text_length) :: digits_text
+        integer :: n, places
+        call int_text(int(q, int64), text, length)
+        call int_text(int(abs(place), int64), digits_text, n)
+        places = merge(2, 4, abs(place) < 100)
+        text(length + 1:length + 2) = merge("E+", "E-", place >= 0)
+        length = length + 2
+        if (n < places) then
+            text(length + 1:length + places - n) = "0000"
+            length = length + places - n
+        end if
+        text(length + 1:length + n) = digits_text(:n)
+        length = length + n
+    end subroutine power_text
 
     !> Sphere i's bound: its own (run%v_bounds, its rounding included) where
     !> the run gives one, else the run's. With precision=auto and its
@@ -378,8 +439,10 @@ contains
         integer, intent(in) :: i
         bound = run%v_bound
         if (allocated(run%v_bounds)) bound = run%v_bounds(i)
-        if (precision_word == "auto" .and. auto%certified .and. run%answer == answer_exact) then
-            if (allocated(auto%v_bounds)) bound = min(bound, auto%v_bounds(i))
+        ! (auto's flag first: the words are compared only where it is set)
+        if (auto%certified) then
+            if (precision_word == "auto" .and. run%answer == answer_exact .and. &
+                allocated(auto%v_bounds)) bound = min(bound, auto%v_bounds(i))
         end if
     end function sphere_bound
 
@@ -390,8 +453,11 @@ contains
     pure integer function decade(x)
         real(qp), intent(in) :: x
         real(dp) :: l
-        if (x >= tiny(1.0_dp) .and. x <= huge(1.0_dp)) then
-            l = log10(real(x, dp))
+        ! (the range told in real(8), where a comparison is no call: x rounded
+        ! into tiny or huge of real(8) has their decade)
+        l = real(x, dp)
+        if (l >= tiny(1.0_dp) .and. l <= huge(1.0_dp)) then
+            l = log10(l)
             if (abs(l - anint(l)) > 1.0e-9_dp) then
                 decade = floor(l)
                 return
@@ -410,27 +476,65 @@ contains
         end do
     end subroutine write_numbered
 
-    !> The line `<name><i> <x>`, x with every digit of the kind that answered,
-    !> assembled in place: a million of them are a long row's answer.
+    !> The line `<name><i> <x>`, x with every digit of the kind that answered.
     subroutine put_numbered(name, i, x)
         character(len=*), intent(in) :: name
         integer, intent(in) :: i
         real(qp), intent(in) :: x
-        character(len=number_text_length) :: number, place
-        character(len=2*number_text_length + 2) :: line
-        integer :: n_number, n_place, at
-        call int_text(int(i, int64), place, n_place)
+        character(len=number_text_length) :: number
+        integer :: n_number
         call real_text(x, precision_digits, number, n_number)
+        call put_line(name, i, number(:n_number))
+    end subroutine put_numbered
+
+    !> The line `<name><i> <text>`, assembled in place: a million of them are
+    !> a long row's answer. The lines come numbered 1, 2, 3, ...: i's digits
+    !> are the last line's counted up by one (place_text), not made anew.
+    subroutine put_line(name, i, text)
+        character(len=*), intent(in) :: name, text
+        integer, intent(in) :: i
+        character(len=2*number_text_length + 2) :: line
+        integer :: n_place, at
+        call count_to(i)
+        n_place = place_length
         at = len(name)
         line(:at) = name
-        line(at + 1:at + n_place) = place(:n_place)
+        line(at + 1:at + n_place) = place_text(len(place_text) - n_place + 1:)
         at = at + n_place + 1
         line(at:at) = " "
-        line(at + 1:at + n_number) = number(:n_number)
-        at = at + n_number + 1
+        line(at + 1:at + len(text)) = text
+        at = at + len(text) + 1
         line(at:at) = new_line("a")
         call out%put_text(line(:at))
-    end subroutine put_numbered
+    end subroutine put_line
+
+    !> place_text ends in the digits of i (place_length of them): counted up
+    !> by one from the last i where i follows it, else written anew.
+    subroutine count_to(i)
+        integer, intent(in) :: i
+        character(len=number_text_length) :: digits_text
+        integer :: at
+        if (i == place_value + 1 .and. place_value >= 0) then
+            at = len(place_text)
+            do
+                if (place_text(at:at) /= "9") then
+                    place_text(at:at) = achar(iachar(place_text(at:at)) + 1)
+                    exit
+                end if
+                place_text(at:at) = "0"
+                at = at - 1
+                if (at == len(place_text) - place_length) then
+                    place_text(at:at) = "1"
+                    place_length = place_length + 1
+                    exit
+                end if
+            end do
+        else
+            call int_text(int(i, int64), digits_text, place_length)
+            place_text(len(place_text) - place_length + 1:) = digits_text(:place_length)
+        end if
+        place_value = i
+    end subroutine count_to
 
 
 

@@ -213,6 +213,7 @@ contains
             new_unittest("try_at_tol_proves_no_collapse", test_try_at_tol), &
             new_unittest("label_of_a_pass_below_tol", test_pass_below_tol), &
             new_unittest("rounding_bound_holds", test_rounding_bound), &
+            new_unittest("rounding_bound_in_double_covers_its_formula", test_rounding_in_double), &
             new_unittest("unresolved_bound_holds", test_unresolved_bound), &
             new_unittest("bounded_cascade_within_its_bound", test_bounded_cascade), &
             new_unittest("tolerance_end_within_its_bound", test_tolerance_end), &
@@ -371,6 +372,59 @@ contains
             run%v_bounds) .and. run%v_bound < 1.0e-31_qp, "e = 0.1: velocities "// &
             str(maxval(abs(run%v - 0.25_qp)))//" from 1/4, bound "//str(run%v_bound))
     end subroutine test_rounding_bound
+
+    !> The rounding bound is evaluated in double precision with its own
+    !> rounding covered, or in real(16) where a quantity it reads is beyond
+    !> double's safe range. A scene run at v0 = 1 and at v0 = 2^-900 takes the
+    !> same collisions and limits with every rate, velocity and sum scaled by
+    !> 2^-900 exactly (a power of two, far from real(16)'s limits), and its
+    !> bound in real(16) (the second run) scaled back is the formula's value
+    !> to real(16)'s precision: the bound in double (the first) must be at
+    !> least that, and within 1e-8 of it (its cover is 2 (8 p + 16) 2^-53).
+    !> Equal masses (summed from sphere 1), a heaviest sphere inside the row
+    !> (summed from it, the momentum fixed), elastic, inelastic and
+    !> collapsing rows.
+    subroutine test_rounding_in_double(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(scene_t) :: scene
+        type(run_t) :: one, tiny
+        real(qp), parameter :: scale = 2.0_qp**(-900)
+        real(qp) :: masses(7) = [1.0_qp, 2.0_qp, 3.0_qp, 0.5_qp, 3.0_qp, 1.0_qp, 0.25_qp]
+        real(qp) :: back(300)
+        integer :: stat, i, p
+        character(len=200) :: msg
+        do i = 1, 6
+            select case (i)
+            case (1)
+                call scene_init(scene, stat, msg, p=300, e=1.0_qp)
+            case (2)
+                call scene_init(scene, stat, msg, p=60, e=0.5_qp)
+            case (3)
+                call scene_init(scene, stat, msg, p=4, e=0.1_qp)
+            case (4)
+                call scene_init(scene, stat, msg, p=7, e=0.7_qp, masses=masses)
+            case (5)
+                call scene_init(scene, stat, msg, p=7, e=0.2_qp, masses=masses)
+            case default
+                call scene_init(scene, stat, msg, p=7, e=0.9_qp, masses=masses(7:1:-1))
+            end select
+            p = scene%p
+            call simulate(scene, one)
+            scene%v0 = scale
+            call simulate(scene, tiny)
+            call check(error, one%n == tiny%n .and. one%limits%n == tiny%limits%n .and. &
+                all(tiny%v == one%v*scale), "scene "//itoa(i)//": the run at v0 = 2^-900 is " &
+                //"not the run at v0 = 1 scaled")
+            if (allocated(error)) return
+            back(:p) = tiny%v_rounding/scale
+            call check(error, all(one%v_rounding >= back(:p)) .and. &
+                all(one%v_rounding <= back(:p)*(1 + 1.0e-8_qp)) .and. all(back(:p) > 0), &
+                "scene "//itoa(i)//": the bound in double lies "// &
+                str(minval(one%v_rounding/back(:p) - 1))//" ... "// &
+                str(maxval(one%v_rounding/back(:p) - 1))//" from its formula in real(16)")
+            if (allocated(error)) return
+        end do
+    end subroutine test_rounding_in_double
 
     !> A light sphere between two heavy ones shuttles with rates shrinking by
     !> about 1 - 2m/M per cycle; the cycle limit gives the common velocity

@@ -17,6 +17,18 @@ module sphere_row_format
     !> smallest subnormal), has some 11,650 digits.
     integer, parameter :: limbs_most = 1320
     integer(int64), parameter :: limb_base = 1000000000_int64
+    !> The two digits of each k = 0..99 at 2 k + 1 and 2 k + 2.
+    character(len=200), parameter :: digit_pairs = "00010203040506070809101112131415161718192021222324" &
+        //"25262728293031323334353637383940414243444546474849" &
+        //"50515253545556575859606162636465666768697071727374" &
+        //"75767778798081828384858687888990919293949596979899"
+    !> The mantissa of zero at any number of digits.
+    character(len=number_text_length), parameter :: zeros = repeat("0", number_text_length)
+    !> 10^j, j = 0..18: the places of an int64.
+    integer(int64), parameter :: tens(0:18) = [1_int64, 10_int64, 10_int64**2, &
+        10_int64**3, 10_int64**4, 10_int64**5, 10_int64**6, 10_int64**7, 10_int64**8, &
+        10_int64**9, 10_int64**10, 10_int64**11, 10_int64**12, 10_int64**13, 10_int64**14, &
+        10_int64**15, 10_int64**16, 10_int64**17, 10_int64**18]
 
     !> Text of an integer of either kind.
     interface itoa
@@ -48,30 +60,36 @@ contains
         integer(int64), intent(in) :: i
         character(len=number_text_length), intent(out) :: text
         integer, intent(out) :: length
-        character(len=24) :: buf
         integer(int64) :: rest
-        integer :: at
-        ! digits from the right, without formatted I/O (it is called per
-        ! line of long outputs); the most negative value has no positive twin
+        integer :: at, places, pair
+        ! digits from the right, two at a time, without formatted I/O (it is
+        ! called per line of long outputs); the most negative value has no
+        ! positive twin
         if (i == -huge(i) - 1) then
             text = "-9223372036854775808"
             length = 20
             return
         end if
         rest = abs(i)
-        at = len(buf) + 1
-        do
-            at = at - 1
-            buf(at:at) = achar(iachar("0") + int(mod(rest, 10_int64)))
-            rest = rest/10
-            if (rest == 0) exit
+        places = 1
+        do while (places < 19)
+            if (rest < tens(places)) exit
+            places = places + 1
         end do
-        if (i < 0) then
-            at = at - 1
-            buf(at:at) = "-"
+        length = places
+        if (i < 0) length = length + 1
+        text(length + 1:) = ""
+        at = length
+        do while (rest >= 10)
+            pair = int(mod(rest, 100_int64))
+            text(at - 1:at) = digit_pairs(2*pair + 1:2*pair + 2)
+            rest = rest/100
+            at = at - 2
+        end do
+        if (at > length - places) then
+            text(at:at) = achar(iachar("0") + int(rest))
         end if
-        text = buf(at:)
-        length = len(buf) - at + 1
+        if (i < 0) text(1:1) = "-"
     end subroutine int_text
 
     !> `x` (converted exactly to real128) written with `digits` significant
@@ -105,25 +123,34 @@ contains
         integer, intent(out) :: length
         character(len=number_text_length) :: mantissa, e
         integer :: power, ew, ne, at
-        if (x /= x) then
-            text = "nan"
-            length = 3
-        else if (abs(x) > huge(x)) then
-            text = merge("inf ", "-inf", x > 0)
-            length = len_trim(text)
+        if (.not. finite(x)) then
+            if (x /= x) then
+                text = "nan"
+                length = 3
+            else
+                text = merge("inf ", "-inf", x > 0)
+                length = len_trim(text)
+            end if
         else
             ew = 2
-            if (x /= 0.0_qp .and. (abs(x) >= 1.0e99_qp .or. abs(x) <= 1.0e-99_qp)) ew = 4
+            if (beyond_two_places(x)) ew = 4
             call decimal_digits(abs(x), digits, mantissa, power)
-            call int_text(int(abs(power), int64), e, ne)
+            if (abs(power) < 100) then
+                ! (two places, the exponent of every ordinary number)
+                e(1:2) = digit_pairs(2*abs(power) + 1:2*abs(power) + 2)
+                ne = 2
+            else
+                call int_text(int(abs(power), int64), e, ne)
+            end if
             ! sign, d.ddd, E, sign, the exponent's places: put in place (the
             ! text of every number of a long row's answer)
             at = 0
-            if (ieee_is_negative(x)) then
+            if (negative(x)) then
                 text(1:1) = "-"
                 at = 1
             end if
-            text(at + 1:at + 2) = mantissa(1:1)//"."
+            text(at + 1:at + 1) = mantissa(1:1)
+            text(at + 2:at + 2) = "."
             text(at + 3:at + digits + 1) = mantissa(2:digits)
             at = at + digits + 1
             text(at + 1:at + 2) = merge("E+", "E-", power >= 0)
@@ -139,6 +166,58 @@ contains
         end if
     end subroutine real_text
 
+    !> x is neither infinite nor a NaN: for binary128, its exponent field is
+    !> not all ones, told from its bits (real(16) comparisons are calls).
+    pure logical function finite(x)
+        real(qp), intent(in) :: x
+        integer, parameter :: i16 = selected_int_kind(38)
+        if (digits(x) == 113 .and. maxexponent(x) == 16384) then
+            finite = iand(shiftr(transfer(x, 1_i16), 112), 32767_i16) /= 32767_i16
+        else
+            finite = x == x .and. abs(x) <= huge(x)
+        end if
+    end function finite
+
+    !> x carries a minus sign (-0 too), from its sign bit for binary128.
+    pure logical function negative(x)
+        real(qp), intent(in) :: x
+        integer, parameter :: i16 = selected_int_kind(38)
+        if (digits(x) == 113 .and. maxexponent(x) == 16384) then
+            negative = btest(transfer(x, 1_i16), 127)
+        else
+            negative = ieee_is_negative(x)
+        end if
+    end function negative
+
+    !> x is +0 or -0, from its bits for binary128.
+    pure logical function is_zero(x)
+        real(qp), intent(in) :: x
+        integer, parameter :: i16 = selected_int_kind(38)
+        if (digits(x) == 113 .and. maxexponent(x) == 16384) then
+            is_zero = iand(transfer(x, 1_i16), huge(1_i16)) == 0
+        else
+            is_zero = x == 0.0_qp
+        end if
+    end function is_zero
+
+    !> The exponent of finite x /= 0 needs more than two places: |x| >= 1e99
+    !> or |x| <= 1e-99. A binary128 number of binary exponent within +-320
+    !> (2^-320 > 1e-99, 2^321 < 1e99) needs two: told from its bits, without
+    !> the two comparisons of real(16), which are calls.
+    pure logical function beyond_two_places(x)
+        real(qp), intent(in) :: x
+        integer, parameter :: i16 = selected_int_kind(38)
+        integer :: biased
+        if (digits(x) == 113 .and. maxexponent(x) == 16384) then
+            biased = int(iand(shiftr(transfer(x, 1_i16), 112), 32767_i16))
+            if (abs(biased - 16383) <= 320) then
+                beyond_two_places = .false.
+                return
+            end if
+        end if
+        beyond_two_places = x /= 0.0_qp .and. (abs(x) >= 1.0e99_qp .or. abs(x) <= 1.0e-99_qp)
+    end function beyond_two_places
+
     !> The first n significant digits of y >= 0 (finite), rounded to nearest
     !> with ties to even, as in y = 0.d1 d2 ... dn * 10^(power + 1): exactly,
     !> from y = m 2^k (m an integer of at most 113 bits) as the integer m 2^k
@@ -151,17 +230,29 @@ contains
         integer, intent(in) :: n
         character(len=number_text_length), intent(out) :: mantissa
         integer, intent(out) :: power
+        logical :: done
+        ! (a constant of zeros: repeat with n would make a temporary each call)
+        mantissa = zeros
+        power = 0
+        if (is_zero(y)) return
+        call fast_digits(y, n, mantissa, power, done)
+        if (done) return
+        call exact_digits(y, n, mantissa, power)
+    end subroutine decimal_digits
+
+    !> decimal_digits by the long road, exactly, in limbs: any finite y > 0 (its
+    !> work arrays, some 20 kB, only where it is taken).
+    pure subroutine exact_digits(y, n, mantissa, power)
+        real(qp), intent(in) :: y
+        integer, intent(in) :: n
+        character(len=number_text_length), intent(inout) :: mantissa
+        integer, intent(out) :: power
         integer(int64) :: limb(limbs_most)
         character(len=9*limbs_most) :: all
         real(qp) :: m, high
         integer(int64) :: low
         integer :: nl, k, shift, step, length, i
-        logical :: up, done
-        mantissa = repeat("0", n)
-        power = 0
-        if (y == 0.0_qp) return
-        call fast_digits(y, n, mantissa, power, done)
-        if (done) return
+        logical :: up
         m = scale(fraction(y), digits(y))
         k = exponent(y) - digits(y)
         ! m = high 2^56 + low into limbs, exactly (high and low are integers
@@ -208,7 +299,7 @@ contains
         ! 9...9 rounded up
         mantissa(1:1) = "1"
         power = power + 1
-    end subroutine decimal_digits
+    end subroutine exact_digits
 
     !> decimal_digits by a shorter road where it is open (done), not done where
     !> not (the caller then takes the long one): y a normal binary128 number, y = m 2^k
@@ -278,7 +369,7 @@ contains
             s = s - 1
             if (try == 2) return
         end do
-        if (q < top/10) return
+        if (q < ten(n - 1)) return
         if (rest > half .or. (rest == half .and. iand(q, one) == 1)) q = q + 1
         power = n - 1 - s
         if (q == top) then
@@ -288,20 +379,28 @@ contains
         call digits_of(q, n, mantissa)
         done = .true.
     contains
-        !> The n decimal digits of 0 <= q < 10^n into mantissa(1:n).
+        !> The n decimal digits of 0 <= q < 10^n into mantissa(1:n): two
+        !> int64 parts of 17 digits, each written from the right two digits at
+        !> a time.
         pure subroutine digits_of(q, n, mantissa)
             integer(i16), intent(in) :: q
             integer, intent(in) :: n
             character(len=number_text_length), intent(inout) :: mantissa
-            integer(int64) :: part(2)
-            integer :: i, j
+            integer(int64) :: part(2), rest
+            integer :: i, j, last, pair
             part(1) = int(q/ten(17), int64)
             part(2) = int(q - part(1)*ten(17), int64)
             do j = 2, 1, -1
-                do i = n - 17*(2 - j), max(n - 17*(3 - j) + 1, 1), -1
-                    mantissa(i:i) = achar(iachar("0") + int(mod(part(j), 10_int64)))
-                    part(j) = part(j)/10
+                rest = part(j)
+                i = n - 17*(2 - j)
+                last = max(n - 17*(3 - j) + 1, 1)
+                do while (i > last)
+                    pair = int(mod(rest, 100_int64))
+                    mantissa(i - 1:i) = digit_pairs(2*pair + 1:2*pair + 2)
+                    rest = rest/100
+                    i = i - 2
                 end do
+                if (i == last) mantissa(i:i) = achar(iachar("0") + int(mod(rest, 10_int64)))
             end do
         end subroutine digits_of
     end subroutine fast_digits

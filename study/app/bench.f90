@@ -1,7 +1,10 @@
 !> Speed of the engine per precision kind and of the study, into bench.tsv.
 !>
 !> Timing is measured here, never asserted in tests: wall-clock numbers of
-!> one machine, written with a description of that machine.
+!> one machine, written with a description of that machine. `parts` names
+!> the parts measured anew; the others' rows are kept from OUT/bench.tsv as
+!> they were (a part's timings stand with the machine and the day they were
+!> taken on; the parts loop and whole name their machine in rows of their own).
 program c12_bench
     use, intrinsic :: iso_fortran_env, only: compiler_version, compiler_options, &
         int64
@@ -27,14 +30,24 @@ program c12_bench
     real(qp) :: engine_ns_p1e6
     real :: min_seconds
     integer :: stat, unit
+    !> The parts of the table, in its order, and those measured anew.
+    character(len=*), parameter :: part_names(8) = [character(len=12) :: "kinds", &
+        "monte_carlo", "side_by_side", "callgrind", "methods", "loop", "whole", "study"]
+    logical :: measure(size(part_names))
+    !> The rows of the previous OUT/bench.tsv (kept for the parts not measured).
+    character(len=4000), allocatable :: previous(:)
 
     call start_program(cli, "c12-bench", &
         "Times the engine in each precision kind (ns per collision) and collects"//nl// &
         "the wall time of each study program from OUT/timing/; writes OUT/bench.tsv.")
     call cli%add_real("min_seconds", "0.1", "seconds of repeated runs per timing", &
         lo=0.0_qp, hi=100.0_qp, lo_open=.true., hi_open=.true.)
+    call cli%add_word("parts", "all", "the parts measured anew, comma-separated (kinds, " &
+        //"monte_carlo, side_by_side, callgrind, methods, loop, whole, study), or all; the " &
+        //"others' rows kept from OUT/bench.tsv")
     call read_keys(cli)
     out = cli%get_word("out")
+    call choose_parts(cli%get_word("parts"))
     ! the study's programs are installed next to this one
     call get_command_argument(0, arg0)
     bin = "."
@@ -44,18 +57,120 @@ program c12_bench
     call open_table(out, "bench.tsv", "quantity"//tab//"value"//tab//"unit"//tab//"note", &
         unit, stat, msg)
     call stop_unless_normal(stat, msg)
-    call machine_and_kinds()
-    call time_monte_carlo()
-    call side_by_side()
-    call callgrind_counts()
-    call method_costs()
-    call loop_costs(engine_ns_p1e6)
-    call whole_process(engine_ns_p1e6)
-    call study_total()
+    if (measure(1)) then
+        call machine_and_kinds()
+    else
+        call keep(1)
+    end if
+    if (measure(2)) then
+        call time_monte_carlo()
+    else
+        call keep(2)
+    end if
+    if (measure(3)) then
+        call side_by_side()
+    else
+        call keep(3)
+    end if
+    if (measure(4)) then
+        call callgrind_counts()
+    else
+        call keep(4)
+    end if
+    if (measure(5)) then
+        call method_costs()
+    else
+        call keep(5)
+    end if
+    call loop_costs(engine_ns_p1e6, measure(6))
+    if (.not. measure(6)) call keep(6)
+    if (measure(7)) then
+        call whole_process(engine_ns_p1e6)
+    else
+        call keep(7)
+    end if
+    if (measure(8)) then
+        call study_total()
+    else
+        call keep(8)
+    end if
     call close_table(unit, stat, msg)
     call stop_unless_written(stat, msg)
 
 contains
+
+    !> The parts named in `words` (all, or a comma-separated list of
+    !> part_names) are measured; with any left out, the previous table's rows
+    !> are read to keep theirs.
+    subroutine choose_parts(words)
+        character(len=*), intent(in) :: words
+        character(len=4000) :: line
+        integer :: first, last, k, u, ios, n
+        measure = words == "all"
+        if (words == "all") return
+        first = 1
+        do while (first <= len(words))
+            last = index(words(first:), ",") + first - 2
+            if (last < first) last = len(words)
+            k = findloc(part_names, words(first:last), 1)
+            if (k == 0) call fail("c12-bench: parts = "//words//": '"//words(first:last)// &
+                "' is not a part; allowed all or parts among kinds, monte_carlo, " &
+                //"side_by_side, callgrind, methods, loop, whole, study")
+            measure(k) = .true.
+            first = last + 2
+        end do
+        open (newunit=u, file=out//"/bench.tsv", status="old", action="read", iostat=ios)
+        if (ios /= 0) call fail("c12-bench: parts = "//words//": "//out//"/bench.tsv, whose " &
+            //"other parts it keeps, cannot be read; allowed parts = all")
+        allocate (previous(0))
+        n = 0
+        do
+            read (u, "(a)", iostat=ios) line
+            if (ios /= 0) exit
+            n = n + 1
+            if (n > 1) previous = [previous, line]
+        end do
+        close (u)
+    end subroutine choose_parts
+
+    !> The previous table's rows of part k, as they were.
+    subroutine keep(k)
+        integer, intent(in) :: k
+        integer :: i
+        do i = 1, size(previous)
+            if (part_of(previous(i)) == k) write (unit, "(a)") trim(previous(i))
+        end do
+    end subroutine keep
+
+    !> The part a row of the table belongs to, by its quantity's prefix.
+    pure integer function part_of(row)
+        character(len=*), intent(in) :: row
+        part_of = 0
+        if (starts(row, "machine.") .or. starts(row, "engine.")) then
+            part_of = 1
+        else if (starts(row, "c2.monte_carlo")) then
+            part_of = 2
+        else if (starts(row, "c2.") .or. starts(row, "openmp.")) then
+            part_of = 3
+        else if (starts(row, "callgrind.")) then
+            part_of = 4
+        else if (starts(row, "methods.")) then
+            part_of = 5
+        else if (starts(row, "loop.")) then
+            part_of = 6
+        else if (starts(row, "whole.")) then
+            part_of = 7
+        else if (starts(row, "study.")) then
+            part_of = 8
+        end if
+    end function part_of
+
+    !> `text` begins with `prefix`.
+    pure logical function starts(text, prefix)
+        character(len=*), intent(in) :: text, prefix
+        starts = .false.
+        if (len(text) >= len(prefix)) starts = text(:len(prefix)) == prefix
+    end function starts
 
     !> The machine, and the definition's scene in every kind built at three e.
     subroutine machine_and_kinds()
@@ -331,8 +446,10 @@ contains
     !> c12-cost's cost_vs_loop.tsv (paired runs there, medians of rounds):
     !> the ratio to the loop with its clock in one real, the issue's yardstick,
     !> and to the same loop with the engine's two-real clock.
-    subroutine loop_costs(engine_ns_p1e6)
+    subroutine loop_costs(engine_ns_p1e6, rows)
         real(qp), intent(out) :: engine_ns_p1e6
+        !> Write the rows (else only read the engine's price at p = 10^6).
+        logical, intent(in) :: rows
         character(len=4000) :: line
         character(len=:), allocatable :: f(:), key
         integer :: u, ios, c(8)
@@ -342,19 +459,22 @@ contains
             "precision", "engine_ns_per_collision", "loop_ns_per_collision", "ratio", &
             "ratio_loop2"], u, c, ok)
         if (.not. ok) return
+        if (rows) write (unit, "(a)") "loop.machine"//tab//cpu_model()//tab//"-"//tab// &
+            "the processor of the rows below (cost_vs_loop.tsv made on it), /proc/cpuinfo"
         do
             read (u, "(a)", iostat=ios) line
             if (ios /= 0) exit
             call split_tabs(trim(line), f)
             if (size(f) < maxval(c)) cycle
             key = "loop."//trim(f(c(1)))//".p"//trim(f(c(2)))//"."//trim(f(c(4)))
+            if (key == "loop.elastic.p1000000.qp") read (f(c(5)), *, iostat=ios) engine_ns_p1e6
+            if (.not. rows) cycle
             write (unit, "(a)") key//".ratio"//tab//trim(f(c(7)))//tab//"1"//tab// &
                 "ns per collision of the engine ("//trim(f(c(5)))//") over the tight loop's (" &
                 //trim(f(c(6)))//"), e = "//trim(f(c(3)))//", median of paired rounds, from " &
                 //"cost_vs_loop.tsv"
             write (unit, "(a)") key//".ratio_loop2"//tab//trim(f(c(8)))//tab//"1"//tab// &
                 "the same over the loop with the engine's two-real clock"
-            if (key == "loop.elastic.p1000000.qp") read (f(c(5)), *, iostat=ios) engine_ns_p1e6
         end do
         close (u)
     end subroutine loop_costs
@@ -369,19 +489,57 @@ contains
         real(qp) :: ta, tb, ratio
         call in_turn(bin//"/sphere-row p=1000000 e=1", bin//"/c12-tight-loop p=1000000 e=1", &
             ta, tb, ratio)
+        write (unit, "(a)") "whole.machine"//tab//cpu_model()//tab//"-"//tab// &
+            "the processor of the rows below, /proc/cpuinfo"
         write (unit, "(a)") "whole.p1e6_e1.seconds"//tab//real_str(ta, 3)//tab//"s"//tab// &
             "sphere-row p=1000000 e=1 (qp), the whole process, its 3 10^6 numbers to /dev/null," &
             //" median of "//itoa(pairs)
         write (unit, "(a)") "whole.p1e6_e1.loop_seconds"//tab//real_str(tb, 3)//tab//"s"//tab// &
             "c12-tight-loop p=1000000 e=1 (real(16), one-real clock, no output), in turn with it"
         write (unit, "(a)") "whole.p1e6_e1.ratio"//tab//real_str(ratio, 3)//tab//"1"//tab// &
-            "median of the pairs' ratios; target at most 3"
+            "median of the pairs' ratios; target at most 3.5"
+        call peaks_of("sphere-row p=1000000 e=1", "c12-tight-loop p=1000000 e=1")
         if (engine_ns_p1e6 > 0) write (unit, "(a)") "whole.p1e6_e1.not_the_run_seconds"//tab &
             //real_str(ta - 999999*engine_ns_p1e6*1.0e-9_qp, 3)//tab//"s"//tab//"the process " &
             //"above less its run (999,999 collisions at the engine's "//real_str(engine_ns_p1e6, &
             3)//" ns in cost_vs_loop.tsv): reading, setting up, writing 3 10^6 numbers with " &
             //"every digit; target for the output at most 0.5"
     end subroutine whole_process
+
+    !> The peak memory (the largest resident set) of `command` and of the
+    !> loop's `loop_command`, each run once more, as GNU time reports it
+    !> (/usr/bin/time -f %M); no rows where it is not installed.
+    subroutine peaks_of(command, loop_command)
+        character(len=*), intent(in) :: command, loop_command
+        real(qp) :: engine_mib, loop_mib
+        engine_mib = peak_mib(bin//"/"//command)
+        loop_mib = peak_mib(bin//"/"//loop_command)
+        if (engine_mib <= 0 .or. loop_mib <= 0) return
+        write (unit, "(a)") "whole.p1e6_e1.peak_mib"//tab//real_str(engine_mib, 4)//tab//"MiB" &
+            //tab//command//", the largest resident set (/usr/bin/time -f %M)"
+        write (unit, "(a)") "whole.p1e6_e1.loop_peak_mib"//tab//real_str(loop_mib, 4)//tab// &
+            "MiB"//tab//loop_command//", the same"
+        write (unit, "(a)") "whole.p1e6_e1.peak_ratio"//tab//real_str(engine_mib/loop_mib, 3)// &
+            tab//"1"//tab//"the two peaks' ratio; target at most 2.5"
+    end subroutine peaks_of
+
+    !> The largest resident set of a command in MiB, 0 if it cannot be told.
+    function peak_mib(command) result(mib)
+        character(len=*), intent(in) :: command
+        real(qp) :: mib
+        character(len=*), parameter :: record = "build/bench-runs/peak"
+        integer :: u, ios, exitstat, cmdstat
+        integer(int64) :: kib
+        mib = 0
+        call execute_command_line("/usr/bin/time -f %M -o "//record//" "//command// &
+            " > /dev/null 2>&1", exitstat=exitstat, cmdstat=cmdstat)
+        if (cmdstat /= 0 .or. exitstat /= 0) return
+        open (newunit=u, file=record, status="old", action="read", iostat=ios)
+        if (ios /= 0) return
+        read (u, *, iostat=ios) kib
+        close (u)
+        if (ios == 0) mib = real(kib, qp)/1024
+    end function peak_mib
 
     !> The value of row `key` of an answer table, copied as a row of
     !> bench.tsv with the note `note` (nothing if the table has no such row).
