@@ -154,15 +154,14 @@ contains
     !> merged group that exact arithmetic can have given the bound: two
     !> velocities each within v_bound of theirs differ by at most 2 v_bound,
     !> in units of v0. At v0 = 4, so that a lost 1/v0 shows, for the row
-    !> p = 5, e = 0.2593 (merged at tolerance; in exact arithmetic it
-    !> separates at 2.6e-106 v0, below the line, as it may) and the row tol_*
+    !> p = 7, e = 0.39 (merged at tolerance after 828 collisions) and the row tol_*
     !> at tol = 1e-12 (a bound far above the rounding); a proven collapse
     !> (p = 4, e = 0.1) prints no such line. Both numbers are printed to two
     !> digits: they agree within their rounding, 5 % each.
     subroutine test_separation_printed(error)
         type(error_t), allocatable, intent(out) :: error
         character(len=*), parameter :: unproven(2) = [character(len=110) :: &
-            "p=5 e=0.2593 v0=4", &
+            "p=7 e=0.39 v0=4", &
             "p=4 e=0.555963 gaps=0.6196,0,1.546 masses=18.25,0.04349,0.02667,0.2489 " &
             //"tol=1e-12 v0=4"]
         real(qp), parameter :: v0 = 4, printed = 0.1_qp
