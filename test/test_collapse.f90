@@ -389,7 +389,8 @@ contains
         type(scene_t) :: scene
         type(run_t) :: one, tiny
         real(qp), parameter :: scale = 2.0_qp**(-900)
-        real(qp) :: masses(7) = [1.0_qp, 2.0_qp, 3.0_qp, 0.5_qp, 3.0_qp, 1.0_qp, 0.25_qp]
+        real(qp), parameter :: masses(7) = [1.0_qp, 2.0_qp, 3.0_qp, 0.5_qp, 3.0_qp, 1.0_qp, &
+            0.25_qp]
         real(qp) :: back(300)
         integer :: stat, i, p
         character(len=200) :: msg
@@ -797,9 +798,10 @@ contains
     !> sphere (sphere_row_struck.inc), the limit proven for every B >= 36 at
     !> e <= 0.7 by one box: 20,000 spheres at e = 0.2 and 0.5 end within 10,000
     !> collisions more than one a sphere (the front's forming; a proof of each
-    !> block's merge by its own box, as before, cost O(B) a sphere), every sphere at v0/p, the momentum kept,
-    !> the last absorption at t = p(p - 1)/2 (the block of B reaches sphere B +
-    !> 1, a gap of 1 ahead, in time B), and at e = 0.2 the collapse proven.
+    !> block's merge by its own box, as before, cost O(B) a sphere), every
+    !> sphere at v0/p, the momentum kept, the last absorption at t = p(p - 1)/2
+    !> (the block of B reaches sphere B + 1, a gap of 1 ahead, in time B), and
+    !> at e = 0.2 the collapse proven.
     subroutine test_struck_sweep(error)
         type(error_t), allocatable, intent(out) :: error
         type(scene_t) :: scene

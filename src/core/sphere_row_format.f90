@@ -18,7 +18,8 @@ module sphere_row_format
     integer, parameter :: limbs_most = 1320
     integer(int64), parameter :: limb_base = 1000000000_int64
     !> The two digits of each k = 0..99 at 2 k + 1 and 2 k + 2.
-    character(len=200), parameter :: digit_pairs = "00010203040506070809101112131415161718192021222324" &
+    character(len=200), parameter :: digit_pairs = &
+        "00010203040506070809101112131415161718192021222324" &
         //"25262728293031323334353637383940414243444546474849" &
         //"50515253545556575859606162636465666768697071727374" &
         //"75767778798081828384858687888990919293949596979899"

@@ -21,8 +21,8 @@
 program c12_cost
     use, intrinsic :: iso_fortran_env, only: int64
     use sphere_row, only: qp, scene_t, run_t, scene_init, simulate, str, itoa, &
-        status_normal, status_max_collisions, status_collapsed, auto_t, simulate_auto, real_str, scene_dp_t, &
-        run_dp_t
+        status_normal, status_max_collisions, status_collapsed, auto_t, simulate_auto, real_str, &
+        scene_dp_t, run_dp_t
     use sphere_row_tight_qp, only: tight_qp => tight_run
     use sphere_row_tight_dp, only: tight_dp => tight_run
     use sphere_row_tables, only: open_table, close_table, tab

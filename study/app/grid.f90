@@ -62,7 +62,8 @@ program c12_grid
         "limits_tolerance"//tab//"limits_bounded"//tab//"invariants"//tab//"struck_q0", &
         unit, stat, msg)
     call stop_unless_normal(stat, msg)
-    call open_table(out//"/timing", "collapse_grid.tsv", "p"//tab//"e"//tab//"run[s]", &
+    call open_table(out//"/timing", "collapse_grid.tsv", "p"//tab//"e"//tab//"run[s]"// &
+        tab//"per_collision[us]", &
         unit_time, stat, msg)
     call stop_unless_normal(stat, msg)
     if (again > 0) then
@@ -90,7 +91,8 @@ program c12_grid
                 itoa(run%limits%certified)//tab//itoa(run%limits%tolerance)//tab// &
                 itoa(run%limits%bounded)//tab//why//tab//q0_text(es(j))
             write (unit_time, "(a)") itoa(p)//tab//short_text(es(j))//tab// &
-                short_text(real(c1 - c0, qp)/real(rate, qp), 3)
+                short_text(real(c1 - c0, qp)/real(rate, qp), 3)//tab// &
+                short_text(1.0e6_qp*real(c1 - c0, qp)/real(rate, qp)/max(run%n, 1), 3)
             flush (unit)
             if (again > 0) call run_again()
         end do

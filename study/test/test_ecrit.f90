@@ -123,9 +123,10 @@ contains
     !> certified only where collapse_proven holds. Each scene has one label
     !> that decides: a separation (p = 4, e = 0.2), a certified cycle
     !> (e = 0.1), a group merged at tolerance and nothing else that denies a
-    !> proof (a heavy sphere striking light ones; its other group certified), a bounded cascade (a touching row of 20 with the
-    !> closed forms off), certified limits but a collision passed over below
-    !> tol (a row near p = 8's edge; at tol = 1e-60 it takes more collisions),
+    !> proof (a heavy sphere striking light ones; its other group certified),
+    !> a bounded cascade (a touching row of 20 with the closed forms off),
+    !> certified limits but a collision passed over below tol (a row near
+    !> p = 8's edge; at tol = 1e-60 it takes more collisions),
     !> a normal end with a pair still closing slower than tol v0 (p = 3,
     !> e = 1/2, tol = 0.3: spheres 1 and 2 close at v0/16 after two
     !> collisions), and the budget spent; in real64 the first, the second and
