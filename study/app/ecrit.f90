@@ -197,8 +197,8 @@ contains
                     r%form%found)//tab//fit_text(c_fit*p_real(j)**slope, n_large >= 2)//tab// &
                     fit_text(c_inverse/p_real(j), n_large >= 1)//tab// &
                     fit_text(1.0_qp - mcnamara_young_e(r%p, k_my), k_my > 0.0_qp)//tab// &
-                    optional_text(real_str(g%certified_max, 20), g%certified_max >= 0.0_qp) &
-                    //tab//optional_text(real_str(g%finite_min, 20), g%finite_min <= 1.0_qp)
+                    optional_text(real_str(g%certified_max, 36), g%certified_max >= 0.0_qp) &
+                    //tab//optional_text(real_str(g%finite_min, 36), g%finite_min <= 1.0_qp)
             end associate
         end do
         call close_table(unit, stat, msg)
