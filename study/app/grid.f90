@@ -57,21 +57,7 @@ program c12_grid
     if (any(ps /= aint(ps))) call fail("c12-grid: ps = "//cli%get_text("ps")// &
         ": allowed whole numbers")
 
-    call open_table(out, "collapse_grid.tsv", "p"//tab//"e"//tab//"answer"//tab//"status"// &
-        tab//"collisions"//tab//"v_bound[V]"//tab//"limits_certified"//tab// &
-        "limits_tolerance"//tab//"limits_bounded"//tab//"invariants"//tab//"struck_q0", &
-        unit, stat, msg)
-    call stop_unless_normal(stat, msg)
-    call open_table(out//"/timing", "collapse_grid.tsv", "p"//tab//"e"//tab//"run[s]"// &
-        tab//"per_collision[us]", &
-        unit_time, stat, msg)
-    call stop_unless_normal(stat, msg)
-    if (again > 0) then
-        call open_table(out, "collapse_grid_again.tsv", "p"//tab//"e"//tab//"answer"//tab// &
-            "v_bound[V]"//tab//"answer_again"//tab//"v_bound_again[V]"//tab// &
-            "difference[V]"//tab//"agree", unit_again, stat, msg)
-        call stop_unless_normal(stat, msg)
-    end if
+    call open_tables()
     disagree = 0
     do i = 1, size(ps)
         p = nint(ps(i))
@@ -110,6 +96,25 @@ program c12_grid
     call close_table(unit_time, stat, msg)
     call stop_unless_written(stat, msg)
 contains
+    !> Open the grid's table, its timings and (with `again`) the second runs'.
+    subroutine open_tables()
+        call open_table(out, "collapse_grid.tsv", "p"//tab//"e"//tab//"answer"//tab//"status"// &
+            tab//"collisions"//tab//"v_bound[V]"//tab//"limits_certified"//tab// &
+            "limits_tolerance"//tab//"limits_bounded"//tab//"invariants"//tab//"struck_q0", &
+            unit, stat, msg)
+        call stop_unless_normal(stat, msg)
+        call open_table(out//"/timing", "collapse_grid.tsv", "p"//tab//"e"//tab//"run[s]"// &
+            tab//"per_collision[us]", &
+            unit_time, stat, msg)
+        call stop_unless_normal(stat, msg)
+        if (again > 0) then
+            call open_table(out, "collapse_grid_again.tsv", "p"//tab//"e"//tab//"answer"//tab// &
+                "v_bound[V]"//tab//"answer_again"//tab//"v_bound_again[V]"//tab// &
+                "difference[V]"//tab//"agree", unit_again, stat, msg)
+            call stop_unless_normal(stat, msg)
+        end if
+    end subroutine open_tables
+
     !> The row once more at vtol times `again`: its velocities must lie within
     !> the sum of the two bounds of the first run's, sphere by sphere.
     subroutine run_again()
