@@ -100,8 +100,6 @@ contains
                     //" values, each > 0")
                 return
             end if
-        else
-            allocate (masses(p), source=1.0_qp)
         end if
         if (cli%given("gaps")) then
             gaps = cli%get_reals("gaps")
@@ -112,14 +110,14 @@ contains
                     //" values, each >= 0")
                 return
             end if
-        else
-            allocate (gaps(p - 1), source=cli%get_real("a"))
         end if
         call check_scales(cli, p, cli%get_real("d"), cli%get_real("v0"), masses, gaps, &
             huge(1.0_qp), "real(16)", error)
         if (allocated(error)) return
+        ! masses or gaps not given are absent here (not allocated): scene_init
+        ! makes them equal in the scene's own arrays, with no copy of p reals
         call scene_init(scene, stat, msg, p=p, e=e, d=cli%get_real("d"), &
-            v0=cli%get_real("v0"), tol=cli%get_real("tol"), &
+            a=cli%get_real("a"), v0=cli%get_real("v0"), tol=cli%get_real("tol"), &
             max_collisions=cli%get_int("max_collisions"), masses=masses, gaps=gaps)
         if (stat /= status_normal) call fatal_error(error, trim(msg))
         scene%calendar_from = cli%get_int("calendar_from")
@@ -181,10 +179,14 @@ contains
     !> Refuse a scene whose length, time, velocity or position scale is not
     !> finite in the kind whose largest number is `big` (named `kind_name`),
     !> naming the key that makes it so.
+    !> `masses` and `gaps` are read only where their keys are given: a row of
+    !> equal gaps (the key a) or of equal masses has its sums in one product
+    !> each, with no pass over p reals of real(16).
     subroutine check_scales(cli, p, d, v0, masses, gaps, big, kind_name, error)
         type(cli_t), intent(in) :: cli
         integer, intent(in) :: p
-        real(qp), intent(in) :: d, v0, masses(:), gaps(:), big
+        real(qp), intent(in) :: d, v0, big
+        real(qp), intent(in), optional :: masses(:), gaps(:)
         character(len=*), intent(in) :: kind_name
         type(error_t), allocatable, intent(out) :: error
         character(len=*), parameter :: row_text = "(p-1) d + sum(gaps)", &
@@ -194,7 +196,16 @@ contains
         limit = short_text(big, 3, "down")
         gap_key = "a"
         if (cli%given("gaps")) gap_key = "gaps"
-        gap_sum = sum(gaps)
+        if (cli%given("gaps")) then
+            gap_sum = sum(gaps)
+        else
+            gap_sum = real(p - 1, qp)*cli%get_real("a")
+        end if
+        if (cli%given("masses")) then
+            ratio = sum(masses)/minval(masses)
+        else
+            ratio = real(p, qp)
+        end if
         diameters = real(p - 1, qp)*d
         row = diameters + gap_sum
         ! the larger of the two terms of the row's length is the one at fault
@@ -211,7 +222,6 @@ contains
                 //short_text(gap_sum/big, 3, "up"))
             return
         end if
-        ratio = sum(masses)/minval(masses)
         if (.not. (ratio <= big/2.0_qp)) then
             call refuse_scale(error, cli, "masses", "sum(masses)/min(masses) overflows " &
                 //kind_name//"; allowed sum(masses)/min(masses) <= " &

@@ -48,6 +48,8 @@ program c12_bench
     call read_keys(cli)
     out = cli%get_word("out")
     call choose_parts(cli%get_word("parts"))
+    ! the runs' own outputs and records, whichever parts are measured
+    call execute_command_line("mkdir -p build/bench-runs")
     ! the study's programs are installed next to this one
     call get_command_argument(0, arg0)
     bin = "."
@@ -400,7 +402,6 @@ contains
             //"stability map (the timed tables run one thing at a time by design)")]
         runs = "build/bench-runs"
         one = "OMP_NUM_THREADS=1 "
-        call execute_command_line("mkdir -p "//runs)
         call in_turn(one//bin//"/c12-c2 out="//runs, one//bin//"/c12-minimal-loop", ta, tb, &
             ratio)
         write (unit, "(a)") "c2.seconds_one_thread"//tab//real_str(ta, 4)//tab//"s"//tab// &
