@@ -164,10 +164,12 @@ contains
     !> late is off by a whole period's duration (4e-8 at p = 3). (The cycle's
     !> tail is summed from the last ratio of its period times, which after
     !> three periods is good to about 1e-16.) A row of unequal masses
-    !> (1, 2, 1.5, 1) collapses in an order that does not repeat above rates
-    !> of tol v0: the group is followed on its own scale, where its order
-    !> settles into a period of 3 (the replay too, at rates of 1e-1200), and
-    !> the certified limit is within 1e-12 of the time stepped to 1e-60 (a
+    !> (1, 2, 1.5, 1) collapses in an order with no period in exact
+    !> arithmetic (as far as 16,000 collisions): the group is followed on
+    !> its own scale, where real(16)'s own order falls into a cycle
+    !> (docs/collapse.md: the premise "the same collisions" fails after
+    !> 586), and the certified limit, the group's mean, is within 1e-12 of
+    !> the time stepped to 1e-60 (a
     !> merge of its gaps once they were below tol v0, at rates of 1e-13, had
     !> ended it 2e-19 early and called it certified).
     subroutine test_cycle_time(error)
