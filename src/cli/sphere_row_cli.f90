@@ -2,7 +2,8 @@
 !> `--help`, and applies scene files (one `&scene` group of whole keys). One
 !> key and the checks of its value are `sphere_row_key`; numbers are read by
 !> `sphere_row_read`; scene files are read and split into items by
-!> `sphere_row_scene_file`; the scene keys are in `sphere_row_scene_keys`.
+!> `sphere_row_scene_file`; the scene keys are in `sphere_row_scene_keys`; the
+!> text of `--help` is assembled from `sphere_row_help`.
 !>
 !> A program registers its keys in a `cli_t` (name, kind of value, default,
 !> allowed range, help line), calls `read_command_line` and then asks the
@@ -39,17 +40,13 @@ module sphere_row_cli
         table_suffix
     use sphere_row_scene_file, only: scene_item_t, read_scene_text, scene_items, join_values, &
         file_origin
-    use sphere_row_system, only: text_out_t
+    use sphere_row_system, only: text_out_t, launcher_rank
+    use sphere_row_help, only: wrapped, help_width, key_lines, input_rules
     implicit none
     private
     public :: cli_t, string_t, read_command_line, fail, command_args, wrapped, help_width
     ! for the modules that register keys of their own kind (sphere_row_scene_keys)
     public :: find_key, key_index, origin
-
-    !> Column where the help text of a key starts in `--help`.
-    integer, parameter :: help_column = 22
-    !> The widest line of `--help`, in columns: it reads in a terminal of 100.
-    integer, parameter :: help_width = 100
 
     character(len=*), parameter :: nl = new_line("a")
 
@@ -739,93 +736,10 @@ contains
         character(len=:), allocatable :: text
         text = "usage: "//this%name//" "//this%synopsis//nl
         if (allocated(this%about)) text = text//nl//this%about//nl
-        text = text//nl//"Keys (key=default):"//nl//key_lines(this)//nl//input_rules(this)
+        text = text//nl//"Keys (key=default):"//nl &
+            //key_lines(this%keys, this%files, file_keys(this))//nl//input_rules(this%name)
         if (allocated(this%epilogue)) text = text//nl//nl//this%epilogue
     end function cli_usage
-
-    !> Per key: `key=default  help`, then what is allowed, each wrapped
-    !> within help_width columns under the help column.
-    pure function key_lines(cli) result(text)
-        type(cli_t), intent(in) :: cli
-        character(len=:), allocatable :: text
-        character(len=:), allocatable :: head
-        integer, parameter :: indent = help_column - 1
-        integer :: k
-        text = ""
-        do k = 1, size(cli%keys)
-            associate (key => cli%keys(k))
-                head = "  "//key%name//"="//key%shown
-                if (len(head) < indent) then
-                    head = head//repeat(" ", indent - len(head))
-                else
-                    head = head//nl//repeat(" ", indent)
-                end if
-                text = text//head//wrapped(key%help, indent, indent, help_width)//nl &
-                    //repeat(" ", indent)//wrapped("allowed "//key%allowed, indent, indent, &
-                    help_width)//nl
-            end associate
-        end do
-        if (cli%files) text = text//"  FILE"//repeat(" ", indent - 6) &
-            //wrapped("a scene file (- : standard input): a namelist group " &
-            //"&scene key = value, ... / of the keys "//file_keys(cli)//"; keys on the " &
-            //"command line override the file's", indent, indent, help_width)//nl
-    end function key_lines
-
-    !> `text` broken at its blanks into lines of at most `width` columns: the
-    !> first goes on from column `first`, each further one starts after
-    !> `indent` blanks (a word longer than a line stays whole).
-    pure function wrapped(text, first, indent, width) result(lines)
-        character(len=*), intent(in) :: text
-        integer, intent(in) :: first, indent, width
-        character(len=:), allocatable :: lines
-        integer :: start, finish, column
-        logical :: fresh
-        lines = ""
-        column = first
-        fresh = .true.
-        start = 1
-        do
-            do while (start <= len(text))
-                if (text(start:start) /= " ") exit
-                start = start + 1
-            end do
-            if (start > len(text)) exit
-            finish = index(text(start:), " ")
-            if (finish == 0) then
-                finish = len(text)
-            else
-                finish = start + finish - 2
-            end if
-            if (.not. fresh .and. column + 1 + finish - start + 1 > width) then
-                lines = lines//nl//repeat(" ", indent)
-                column = indent
-                fresh = .true.
-            end if
-            if (.not. fresh) then
-                lines = lines//" "
-                column = column + 1
-            end if
-            lines = lines//text(start:finish)
-            column = column + finish - start + 1
-            fresh = .false.
-            start = finish + 2
-        end do
-    end function wrapped
-
-    function input_rules(cli) result(text)
-        type(cli_t), intent(in) :: cli
-        character(len=:), allocatable :: text
-        text = "Input: each key at most once, as key=value with nothing around the value;" &
-            //nl//"numbers in full: an optional sign, digits with an optional '.', an optional" &
-            //nl//"exponent e, E, d or D with optional sign and digits (0.25, -3, 1e-5, 2.5d3)," &
-            //nl//"0 or of magnitude between the smallest and the largest normal real(16)" &
-            //nl//"(3.3621e-4932 and 1.1897e4932); a range is decided on the number as" &
-            //" written;" &
-            //nl//"integers: an optional sign and digits; lists: comma-separated numbers." &
-            //nl//"Bad input: one line on stderr ("//cli%name//": key = value: allowed ...)," &
-            //nl//"exit status 2, nothing on stdout; output that cannot be written: one line" &
-            //nl//"on stderr, exit status 1."
-    end function input_rules
 
     !> All command-line arguments, each with its own length.
     subroutine command_args(args)
@@ -865,23 +779,6 @@ contains
         if (launcher_rank() /= 0) stop 2, quiet=.true.
         call fail(cli%name, error)
     end subroutine read_command_line
-
-    !> The rank an MPI launcher gave this process (OpenMPI, MPICH/Hydra, PMIx
-    !> name it in the environment), 0 if there is none.
-    integer function launcher_rank()
-        character(len=*), parameter :: names(3) = [character(len=20) :: &
-            "OMPI_COMM_WORLD_RANK", "PMI_RANK", "PMIX_RANK"]
-        character(len=16) :: value
-        integer :: i, length, stat, rank
-        launcher_rank = 0
-        do i = 1, size(names)
-            call get_environment_variable(trim(names(i)), value, length, stat)
-            if (stat /= 0 .or. length == 0) cycle
-            read (value, *, iostat=stat) rank
-            if (stat == 0) launcher_rank = rank
-            return
-        end do
-    end function launcher_rank
 
     !> For programs: print `name: message` as one line on stderr (control
     !> characters shown escaped) and stop with exit status 2, or 1 if the

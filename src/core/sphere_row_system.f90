@@ -19,7 +19,7 @@ module sphere_row_system
     private
     public :: path_kind, path_missing, path_regular, path_directory, path_other
     public :: rename_file, remove_file, system_error_text, text_out_t, read_some, read_block
-    public :: stderr_is_terminal
+    public :: stderr_is_terminal, launcher_rank
 
     !> Kinds of what a path names (path_kind).
     integer, parameter :: path_missing = 0, path_regular = 1, path_directory = 2, path_other = 3
@@ -300,5 +300,22 @@ contains
         copy = text
         this%errno = int(c_write_all(this%fd, c_loc(copy), int(len(copy), c_size_t)))
     end subroutine write_bytes
+
+    !> The rank an MPI launcher gave this process (OpenMPI, MPICH/Hydra, PMIx
+    !> name it in the environment), 0 if there is none.
+    integer function launcher_rank()
+        character(len=*), parameter :: names(3) = [character(len=20) :: &
+            "OMPI_COMM_WORLD_RANK", "PMI_RANK", "PMIX_RANK"]
+        character(len=16) :: value
+        integer :: i, length, stat, rank
+        launcher_rank = 0
+        do i = 1, size(names)
+            call get_environment_variable(trim(names(i)), value, length, stat)
+            if (stat /= 0 .or. length == 0) cycle
+            read (value, *, iostat=stat) rank
+            if (stat == 0) launcher_rank = rank
+            return
+        end do
+    end function launcher_rank
 
 end module sphere_row_system
