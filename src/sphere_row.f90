@@ -20,6 +20,7 @@ module sphere_row
         gaps_at_qp => gaps_at_wp, kinetic_energy_qp => kinetic_energy_wp, &
         momentum_qp => momentum_wp, str_qp => str_wp, bounds_t, &
         simulate_certified_qp => simulate_certified_wp, budget_qp => budget_wp, &
+        order_check_qp => order_check_wp, &
         collapse_proven_qp => collapse_proven_wp, struck_least => struck_least_wp
 #ifdef SPHERE_ROW_XDP
     use sphere_row_engine_xdp, only: scene_xdp_t => scene_t, run_xdp_t => run_t, &
@@ -28,6 +29,7 @@ module sphere_row
         gaps_at_xdp => gaps_at_wp, kinetic_energy_xdp => kinetic_energy_wp, &
         momentum_xdp => momentum_wp, str_xdp => str_wp, bounds_xdp_t => bounds_t, &
         simulate_certified_xdp => simulate_certified_wp, budget_xdp => budget_wp, &
+        order_check_xdp => order_check_wp, &
         collapse_proven_xdp => collapse_proven_wp
 #endif
     use sphere_row_engine_dp, only: scene_dp_t => scene_t, run_dp_t => run_t, &
@@ -36,6 +38,7 @@ module sphere_row
         gaps_at_dp => gaps_at_wp, kinetic_energy_dp => kinetic_energy_wp, &
         momentum_dp => momentum_wp, str_dp => str_wp, bounds_dp_t => bounds_t, &
         simulate_certified_dp => simulate_certified_wp, budget_dp => budget_wp, &
+        order_check_dp => order_check_wp, &
         collapse_proven_dp => collapse_proven_wp
     use sphere_row_engine_sp, only: scene_sp_t => scene_t, run_sp_t => run_t, &
         event_log_sp_t => event_log_t, scene_init_sp => scene_init_wp, &
@@ -43,6 +46,7 @@ module sphere_row
         gaps_at_sp => gaps_at_wp, kinetic_energy_sp => kinetic_energy_wp, &
         momentum_sp => momentum_wp, str_sp => str_wp, bounds_sp_t => bounds_t, &
         simulate_certified_sp => simulate_certified_wp, budget_sp => budget_wp, &
+        order_check_sp => order_check_wp, &
         collapse_proven_sp => collapse_proven_wp
     use sphere_row_auto, only: auto_t, simulate_auto, simulate_in_dp
     implicit none
@@ -62,7 +66,7 @@ module sphere_row
     public :: scene_sp_t, run_sp_t, event_log_sp_t
     public :: scene_init, scene_check, simulate, gaps_at, kinetic_energy, momentum, str, budget
     public :: bounds_t, bounds_dp_t, bounds_sp_t, simulate_certified, auto_t, simulate_auto
-    public :: simulate_in_dp, collapse_proven, struck_least
+    public :: simulate_in_dp, collapse_proven, struck_least, order_check
     public :: sphere_row_version
 
     !> The package's version, as fpm.toml states it (a test compares them).
@@ -79,6 +83,15 @@ module sphere_row
         module procedure simulate_certified_xdp
 #endif
     end interface simulate_certified
+
+    !> How many of a row's first collisions exact arithmetic takes in the
+    !> working precision's order (see order_check_wp in sphere_row_order.inc).
+    interface order_check
+        module procedure order_check_qp, order_check_dp, order_check_sp
+#ifdef SPHERE_ROW_XDP
+        module procedure order_check_xdp
+#endif
+    end interface order_check
 
     !> Build and check a scene (see scene_init_wp in sphere_row_engine.inc).
     interface scene_init

@@ -4,7 +4,7 @@
 module test_auto
     use sphere_row, only: qp, dp, scene_t, run_t, event_log_t, scene_init, simulate, &
         scene_dp_t, run_dp_t, event_log_dp_t, bounds_dp_t, simulate_certified, auto_t, &
-        simulate_auto, itoa
+        simulate_auto, itoa, order_check
     use testsuite, only: error_t, unittest_t, new_unittest, check, cases
     implicit none
     private
@@ -29,7 +29,8 @@ contains
             new_unittest("auto_e_0172_as_real128", test_near_critical), &
             new_unittest("auto_equals_real128", test_many_values), &
             new_unittest("auto_at_extreme_scales", test_extreme_scales), &
-            new_unittest("auto_long_row_in_real128_once", test_long_row) &
+            new_unittest("auto_long_row_in_real128_once", test_long_row), &
+            new_unittest("order_check_stops_where_exact_order_leaves", test_order_check) &
             ]
     end function collect_auto
 
@@ -241,5 +242,57 @@ contains
         call check(error, all(log_low%first(1:log%n) == log%first(1:log%n)), &
             "auto: sequence differs, scene "//itoa(tried))
     end subroutine compare_one
+
+
+    !> The order check (order_check) proves no more of a run's order than
+    !> exact arithmetic takes: real(16) takes exact arithmetic's collisions of
+    !> p = 4, e = 0.1, masses 1, 2, 1.5, 1 to the 586th and another from the
+    !> 587th (tools/replay at 3,000 and 6,000 digits, docs/collapse.md), so
+    !> the check stops before that, and real(8)'s before real(16)'s; the
+    !> engine certifies that row after 11,734 collisions, past the check. It
+    !> proves the whole of a separation far below v0 (p = 5, e = 0.2593: 1062
+    !> collisions, separating at rates of 2.6e-106 v0) and the collisions of a
+    !> periodic collapse to its certificate (p = 5, e = 0.258: 469); a row of
+    !> more than 200 spheres is refused.
+    subroutine test_order_check(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(scene_t) :: scene
+        type(scene_dp_t) :: scene_dp
+        type(run_t) :: run
+        character(len=:), allocatable :: why, why_dp
+        integer :: stat, n, n_dp
+        character(len=200) :: msg
+        call scene_init(scene, stat, msg, p=4, e=0.1_qp, masses=[1.0_qp, 2.0_qp, 1.5_qp, 1.0_qp])
+        call order_check(scene, 20000, n, why)
+        call scene_init(scene_dp, stat, msg, p=4, e=0.1_dp, masses=[1.0_dp, 2.0_dp, 1.5_dp, 1.0_dp])
+        call order_check(scene_dp, 20000, n_dp, why_dp)
+        call check(error, n > 100 .and. n <= 586 .and. n_dp < n, "p=4 e=0.1 masses=1,2,1.5,1: " &
+            //"order checked to "//itoa(n)//" in real(16) ("//why//"), "//itoa(n_dp)// &
+            " in real(8); expected at most 586, where real(16) leaves exact arithmetic's order, " &
+            //"and fewer in real(8)")
+        if (allocated(error)) return
+        call simulate(scene, run)
+        call check(error, run%n > n, "p=4 e=0.1 masses=1,2,1.5,1: certified after "// &
+            itoa(run%n)//" collisions, the order checked to "//itoa(n)//"; expected beyond")
+        if (allocated(error)) return
+        call scene_init(scene, stat, msg, p=5, e=0.2593_qp)
+        call simulate(scene, run)
+        call order_check(scene, run%n + 1, n, why)
+        call check(error, n == run%n .and. why == "separated" .and. run%n == 1062, &
+            "p=5 e=0.2593: "//itoa(run%n)//" collisions, order checked to "//itoa(n)//" ("// &
+            why//"); expected the whole separation, 1062")
+        if (allocated(error)) return
+        call scene_init(scene, stat, msg, p=5, e=0.258_qp)
+        call simulate(scene, run)
+        call order_check(scene, run%limits%at, n, why)
+        call check(error, run%limits%certified == 1 .and. run%limits%at > 400 .and. &
+            n == run%limits%at, "p=5 e=0.258: certified limit after "//itoa(run%limits%at)// &
+            " collisions, order checked to "//itoa(n)//" ("//why//"); expected to the limit")
+        if (allocated(error)) return
+        call scene_init(scene, stat, msg, p=201, e=0.5_qp)
+        call order_check(scene, 10, n, why)
+        call check(error, n == 0 .and. index(why, "more than 200 spheres") > 0, &
+            "p=201: order checked to "//itoa(n)//" ("//why//"); expected a refusal")
+    end subroutine test_order_check
 
 end module test_auto

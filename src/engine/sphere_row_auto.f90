@@ -212,6 +212,7 @@ contains
         run%limits%first = low%limits%first
         run%limits%last = low%limits%last
         run%limits%t = real(low%limits%t, qp)
+        run%limits%at = low%limits%at
         run%answer = low%answer
         run%v_bound = real(low%v_bound, qp)
         if (allocated(low%v_bounds)) run%v_bounds = real(low%v_bounds, qp)

@@ -9,7 +9,8 @@
 program c12_collapse
     use, intrinsic :: iso_fortran_env, only: int64, error_unit
     use sphere_row, only: qp, scene_t, run_t, simulate, str, itoa, real_str, answer_word, &
-        answer_exact, answer_certified, answer_tolerance, answer_bounded, answer_unresolved
+        answer_exact, answer_certified, answer_tolerance, answer_bounded, answer_unresolved, &
+        order_check
     use sphere_row_survey, only: survey_t, survey_open, survey_close, survey_scene, &
         check_invariants, scene_command
     use sphere_row_sorting, only: sort
@@ -37,6 +38,9 @@ program c12_collapse
         integer(int64) :: n = 0
         real(qp) :: bound = 0
         real :: seconds = 0
+        !> Exact arithmetic takes the run's collisions in its order, to its
+        !> end or to its first limit (order_check).
+        logical :: order_checked = .false.
         type(row_t) :: row
     end type outcome_t
     type(outcome_t), allocatable :: outcome(:, :)
@@ -142,6 +146,9 @@ contains
         call check_invariants(scene, run, slack, per_collision, why)
         result%broken = why /= ""
         result%why = why
+        if (run%answer == answer_exact .or. run%answer == answer_certified) then
+            call check_order(scene, run, result%order_checked)
+        end if
         if (run%answer /= answer_unresolved .or. .not. scene%closed_form_limits) return
         call result%row%add(index)
         call result%row%add(scene%p)
@@ -161,12 +168,33 @@ contains
         call result%row%add(scene_command(scene))
     end subroutine one_run
 
+    !> Whether order_check proves exact arithmetic's order of collisions as
+    !> far as `run` went: every collision, and the end, for a run that took
+    !> no limit; the collisions before its first limit otherwise (a limit's
+    !> state is not followed). The run's own order is not compared.
+    subroutine check_order(scene, run, checked)
+        type(scene_t), intent(in) :: scene
+        type(run_t), intent(in) :: run
+        logical, intent(out) :: checked
+        character(len=:), allocatable :: why
+        integer :: n
+        if (run%limits%n == 0) then
+            call order_check(scene, int(run%n) + 1, n, why)
+            checked = n == run%n .and. why == "separated"
+        else
+            call order_check(scene, run%limits%at, n, why)
+            checked = n >= run%limits%at
+        end if
+    end subroutine check_order
+
     !> The survey table, the table per row length, the unresolved rows and the
     !> answers.
     subroutine write_tables()
         integer :: unit, unit_time, stat, rule, p, a, rows_of, j, k
         character(len=300) :: msg
         type(row_t), allocatable :: lines(:)
+        character(len=*), parameter :: to_limit = "the collisions before the first limit", &
+            to_end = "every collision and the end          "
         character(len=*), parameter :: answer_columns = "exact"//tab//"certified"//tab// &
             "tolerance"//tab//"bounded"//tab//"unresolved"
         call open_table(out, "collapse_survey.tsv", "rule"//tab//"scenes"//tab// &
@@ -233,6 +261,16 @@ contains
             itoa(count(outcome(every, :)%answer /= answer_unresolved)), "scenes", itoa(n), &
             itoa(count(outcome(every, :)%answer /= answer_unresolved) - n), &
             "rows with an answer: every label but unresolved")
+        do a = answer_exact, answer_certified
+            rows_of = count(outcome(every, :)%answer == a)
+            k = count(outcome(every, :)%answer == a .and. outcome(every, :)%order_checked)
+            call write_answer(unit, "collapse.order_checked_"//answer_word(a), itoa(k), &
+                "scenes", itoa(rows_of), itoa(k - rows_of), "rows whose answer is " &
+                //answer_word(a)//" and for which order_check proves exact arithmetic's " &
+                //"order of collisions (each decision beyond the bound on its rounding, " &
+                //"to first order) as far as the run went: "//trim(merge(to_end, to_limit, &
+                a == answer_exact)))
+        end do
         call write_answer(unit, "collapse.v_bound_max", real_str(bound_max(every, n), 3), &
             "-", "-", "-", "the largest bound on the final velocities of a row with an " &
             //"answer (0: every answer exact or certified)")
