@@ -260,7 +260,7 @@ contains
         type(scene_t) :: scene
         type(scene_dp_t) :: scene_dp
         type(run_t) :: run
-        character(len=:), allocatable :: why, why_dp
+        character(len=80) :: why, why_dp
         integer :: stat, n, n_dp
         character(len=200) :: msg
         call scene_init(scene, stat, msg, p=4, e=0.1_qp, masses=[1.0_qp, 2.0_qp, 1.5_qp, 1.0_qp])
@@ -268,7 +268,7 @@ contains
         call scene_init(scene_dp, stat, msg, p=4, e=0.1_dp, masses=[1.0_dp, 2.0_dp, 1.5_dp, 1.0_dp])
         call order_check(scene_dp, 20000, n_dp, why_dp)
         call check(error, n > 100 .and. n <= 586 .and. n_dp < n, "p=4 e=0.1 masses=1,2,1.5,1: " &
-            //"order checked to "//itoa(n)//" in real(16) ("//why//"), "//itoa(n_dp)// &
+            //"order checked to "//itoa(n)//" in real(16) ("//trim(why)//"), "//itoa(n_dp)// &
             " in real(8); expected at most 586, where real(16) leaves exact arithmetic's order, " &
             //"and fewer in real(8)")
         if (allocated(error)) return
@@ -281,14 +281,14 @@ contains
         call order_check(scene, run%n + 1, n, why)
         call check(error, n == run%n .and. why == "separated" .and. run%n == 1062, &
             "p=5 e=0.2593: "//itoa(run%n)//" collisions, order checked to "//itoa(n)//" ("// &
-            why//"); expected the whole separation, 1062")
+            trim(why)//"); expected the whole separation, 1062")
         if (allocated(error)) return
         call scene_init(scene, stat, msg, p=5, e=0.258_qp)
         call simulate(scene, run)
         call order_check(scene, run%limits%at, n, why)
         call check(error, run%limits%certified == 1 .and. run%limits%at > 400 .and. &
             n == run%limits%at, "p=5 e=0.258: certified limit after "//itoa(run%limits%at)// &
-            " collisions, order checked to "//itoa(n)//" ("//why//"); expected to the limit")
+            " collisions, order checked to "//itoa(n)//" ("//trim(why)//"); expected to the limit")
         if (allocated(error)) return
         ! a plastic cascade of spheres 1-3 at one instant, which in exact
         ! arithmetic goes on for ever: its rates fall to the kind's underflow,
@@ -298,13 +298,13 @@ contains
             2.0_qp], gaps=[2.0_qp, 1.0_qp, 3.0_qp])
         call order_check(scene, 20000, n, why)
         call check(error, n < 10409 .and. index(why, "underflow") > 0, "p=4 e=0 masses=2,4,2," &
-            //"2 gaps=2,1,3: order checked to "//itoa(n)//" ("//why//"); expected a stop at " &
-            //"the underflow, before collision 10,409")
+            //"2 gaps=2,1,3: order checked to "//itoa(n)//" ("//trim(why)// &
+            "); expected a stop at the underflow, before collision 10,409")
         if (allocated(error)) return
         call scene_init(scene, stat, msg, p=201, e=0.5_qp)
         call order_check(scene, 10, n, why)
         call check(error, n == 0 .and. index(why, "more than 200 spheres") > 0, &
-            "p=201: order checked to "//itoa(n)//" ("//why//"); expected a refusal")
+            "p=201: order checked to "//itoa(n)//" ("//trim(why)//"); expected a refusal")
     end subroutine test_order_check
 
 end module test_auto

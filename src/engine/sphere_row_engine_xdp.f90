@@ -5,7 +5,7 @@
 !> (src/collapse/), each written once for a kind `wp`.
 module sphere_row_engine_xdp
     use sphere_row_kinds, only: wp => xdp, qp
-    use sphere_row_format, only: real_str, itoa
+    use sphere_row_format, only: real_str, itoa, int_text, number_text_length
     use sphere_row_policy, only: policy
     use sphere_row_cascade, only: ordered_cascade_merges, cascade_kind
     use sphere_row_status, only: status_normal, status_collapsed, status_max_collisions, &

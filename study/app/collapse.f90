@@ -38,8 +38,8 @@ program c12_collapse
         integer(int64) :: n = 0
         real(qp) :: bound = 0
         real :: seconds = 0
-        !> Exact arithmetic takes the run's collisions in its order, to its
-        !> end or to its first limit (order_check).
+        !> order_check proves exact arithmetic's order of collisions as far as
+        !> the run went: to its end, or to its first limit (check_order).
         logical :: order_checked = .false.
         type(row_t) :: row
     end type outcome_t
@@ -177,10 +177,10 @@ contains
         type(scene_t), intent(in) :: scene
         type(run_t), intent(in) :: run
         logical, intent(out) :: checked
-        character(len=:), allocatable :: why
+        character(len=80) :: why
         integer :: n
         if (run%limits%n == 0) then
-            call order_check(scene, int(run%n) + 1, n, why)
+            call order_check(scene, run%n + 1, n, why)
             checked = n == run%n .and. why == "separated"
         else
             call order_check(scene, run%limits%at, n, why)
