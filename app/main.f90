@@ -6,27 +6,30 @@ program sphere_row_main
         simulate_auto, simulate_in_dp, answer_word, answer_certified, answer_unresolved, &
         answer_exact, real_str, collapse_proven, budget, sphere_row_version
     use sphere_row_cli, only: cli_t, read_command_line, fail
-    use sphere_row_scene_keys, only: add_scene_keys, scene_from_cli, check_scene_in_dp
+    use sphere_row_scene_keys, only: add_scene_keys, add_state_keys, scene_from_cli, &
+        check_scene_in_dp
     use sphere_row_error, only: error_t, fatal_error
     use sphere_row_format, only: short_text, real_text, int_text, number_text_length
     use sphere_row_read, only: printable, read_real
     use sphere_row_system, only: text_out_t, stderr_is_terminal, system_error_text, path_kind, &
         path_missing, path_regular
-    use sphere_row_watch, only: watch_t, event_header, progress_on_terminal, progress_elsewhere
+    use sphere_row_watch, only: watch_t, event_header, sample_header, progress_on_terminal, &
+        progress_elsewhere
     use sphere_row_lines, only: output_help
     implicit none
     type(cli_t) :: cli
-    type(scene_t) :: scene
+    type(scene_t), target :: scene
     type(run_t) :: run
     type(watch_t) :: watch
     type(error_t), allocatable :: error
     type(auto_t) :: auto
     !> The answer (standard output) and, with events=FILE, the event table's
     !> file; with events=yes the table goes to `out` before the answer.
-    type(text_out_t), target :: out, table
-    !> The event table is written (events=yes or a file), and to a file.
-    logical :: events, events_to_file
-    character(len=:), allocatable :: precision_word, events_word
+    type(text_out_t), target :: out, table, samples_table
+    !> The event table is written (events=yes or a file), and to a file; the
+    !> samples' table is written (samples=FILE).
+    logical :: events, events_to_file, samples
+    character(len=:), allocatable :: precision_word, events_word, samples_word
     !> Significant digits of the kind that answered: real(16)'s (str's), or
     !> real(8)'s where it answered (precision=dp, or auto in real(8)); no
     !> number is written with more digits than its kind holds.
@@ -43,6 +46,8 @@ program sphere_row_main
     events_word = cli%get_word("events")
     events = events_word /= "no"
     events_to_file = events .and. events_word /= "yes"
+    samples_word = cli%get_word("samples")
+    samples = samples_word /= "no"
     call choose_precision(error)
     if (allocated(error)) call fail(cli%name, error)
     call start_watch(error)
@@ -51,13 +56,17 @@ program sphere_row_main
     call check_run(error)
     if (allocated(error)) call stop_on(error)
     call write_run()
-    ! the table's file complete before the answer is let out, and given its
-    ! name only once both are written: a failure anywhere leaves no file
+    ! the tables' files complete before the answer is let out, and given
+    ! their names only once all are written: a failure anywhere leaves no file
     if (events_to_file) call table%finish(error)
+    if (allocated(error)) call stop_on(error)
+    if (samples) call samples_table%finish(error)
     if (allocated(error)) call stop_on(error)
     call out%finish(error)
     if (allocated(error)) call stop_on(error)
     if (events_to_file) call table%commit(error)
+    if (allocated(error)) call stop_on(error)
+    if (samples) call samples_table%commit(error)
     if (allocated(error)) call fail(cli%name, error)
 
 contains
@@ -73,11 +82,20 @@ contains
             "Runs one row of spheres struck by sphere 1 (ARGESIM Comparison 12) in"//nl// &
             "real(16) and prints the number of collisions, the end time, the status, how"//nl// &
             "good the answer is, the final velocities v1..vp, positions x1..xp and gaps"//nl// &
-            "y1..y(p-1) (each line is described below). FILE - reads the scene from stdin."
+            "y1..y(p-1) (each line is described below). FILE - reads the scene from stdin."//nl// &
+            "Any initial state too: every velocity, walls, a ring, a table of spheres, a"//nl// &
+            "random gas, and a horizon t_max (docs/scenes.md)."
         call add_scene_keys(cli)
+        call add_state_keys(cli)
         call cli%add_table("events", "no", "yes: the event table on stdout before the " &
             //"answer; FILE.tsv: the table alone into that file, the answer on stdout " &
             //"(its columns are described below)")
+        call cli%add_table("samples", "no", "FILE.tsv: a time series of the run up to t_max " &
+            //"into that file, streamed as it goes: t, temperature (sum m (v - V)^2/p), " &
+            //"energy, collisions_per_sphere and clusters (runs of touching spheres), at t = 0 " &
+            //"and log-spaced times, 10 a decade from t_max/10^4 (precision = qp)")
+        call cli%add_real("sample_every", "", "the samples every this much time instead of " &
+            //"log-spaced", lo=0.0_qp, shown="log")
         call cli%add_choice("precision", "qp", [character(len=4) :: "qp", "dp", "auto"], &
             "qp: real(16); dp: real(8), for a scene within real(8)'s normal range; auto:" &
             //" real(8) where a rounding certificate holds, else real(16)")
@@ -89,6 +107,7 @@ contains
     subroutine stop_on(error)
         type(error_t), intent(in) :: error
         if (events_to_file) call table%discard()
+        if (samples) call samples_table%discard()
         call fail(cli%name, error)
     end subroutine stop_on
 
@@ -101,6 +120,26 @@ contains
         if (events .and. precision_word /= "qp") then
             call fatal_error(error, "events = "//printable(events_word)//" with precision = " &
                 //precision_word//": allowed only with precision = qp")
+            return
+        end if
+        if (samples .and. precision_word /= "qp") then
+            call fatal_error(error, "samples = "//printable(samples_word)//" with precision = " &
+                //precision_word//": allowed only with precision = qp")
+            return
+        end if
+        if (samples .and. .not. cli%given("t_max")) then
+            call fatal_error(error, "samples = "//printable(samples_word)//": no t_max given; " &
+                //"allowed with a horizon t_max, up to which the samples go")
+            return
+        end if
+        if (samples_word == "yes") then
+            call fatal_error(error, "samples = yes: allowed no or the name of a file ending " &
+                //"in .tsv")
+            return
+        end if
+        if (cli%given("sample_every") .and. .not. samples) then
+            call fatal_error(error, "sample_every = "//printable(cli%get_text("sample_every")) &
+                //": allowed only with samples = FILE.tsv")
             return
         end if
         if (precision_word /= "dp") return
@@ -129,27 +168,23 @@ contains
         watch%budget = budget(scene)
         watch%v0 = scene%v0
         watch%out => out
+        if (samples) then
+            call open_table(samples_table, "samples", samples_word, error)
+            if (allocated(error)) return
+            watch%samples = .true.
+            watch%sample_out => samples_table
+            watch%scene => scene
+            if (cli%given("sample_every")) watch%sample_every = cli%get_real("sample_every")
+            watch%wake = 0
+            call samples_table%put(sample_header)
+        end if
         if (.not. events) return
         if (events_to_file) then
-            ! a directory or a device of that name would be found only when
-            ! the table is renamed, after the run: refused now
-            kind = path_kind(events_word, errno)
-            if (kind /= path_missing .and. kind /= path_regular) then
-                call fatal_error(error, "events = "//printable(events_word)//": not a regular " &
-                    //"file (a directory, a device, a FIFO or a socket); allowed yes, no or " &
-                    //"a file name ending in .tsv")
-                return
-            end if
-            call table%create(events_word, errno)
-            if (errno /= 0) then
-                call fatal_error(error, "events = "//printable(events_word)//": cannot be " &
-                    //"written ("//system_error_text(errno)//"); allowed yes, no or a file " &
-                    //"name ending in .tsv in a directory that exists and may be written")
-                return
-            end if
+            call open_table(table, "events", events_word, error)
+            if (allocated(error)) return
             watch%out => table
         end if
-        call watch%out%put(event_header(scene%p))
+        call watch%out%put(event_header(scene%p, scene%wall_right >= 0 .or. scene%ring >= 0))
         megabytes = real(2*scene%p + 6)*41.0/1.0e6
         if (megabytes < 1.0) return
         write (text, "(f0.1)") megabytes
@@ -158,6 +193,29 @@ contains
             //trim(text)//" MB, per event, and a row of "//itoa(scene%p)//" spheres has at " &
             //"least "//itoa(scene%p - 1)//" collisions"
     end subroutine start_watch
+
+    !> Create the file of a table key's value (events or samples): a
+    !> directory or a device of that name would be found only when the table
+    !> is renamed, after the run, so it is refused now.
+    subroutine open_table(file, key, path, error)
+        type(text_out_t), intent(inout) :: file
+        character(len=*), intent(in) :: key, path
+        type(error_t), allocatable, intent(out) :: error
+        integer :: errno, kind
+        kind = path_kind(path, errno)
+        if (kind /= path_missing .and. kind /= path_regular) then
+            call fatal_error(error, key//" = "//printable(path)//": not a regular " &
+                //"file (a directory, a device, a FIFO or a socket); allowed yes, no or " &
+                //"a file name ending in .tsv")
+            return
+        end if
+        call file%create(path, errno)
+        if (errno /= 0) then
+            call fatal_error(error, key//" = "//printable(path)//": cannot be " &
+                //"written ("//system_error_text(errno)//"); allowed yes, no or a file " &
+                //"name ending in .tsv in a directory that exists and may be written")
+        end if
+    end subroutine open_table
 
     !> SPHERE_ROW_PROGRESS=SECONDS in the environment sets the seconds
     !> between progress lines (0: at every look at the clock; off: none).
@@ -303,6 +361,9 @@ contains
             if (auto%answered == "dp") precision_digits = precision(1.0_dp) + 1
         end if
         call out%put("t_end "//real_str(run%t_end, precision_digits))
+        ! (with a horizon, the time of the state below: t_max, or the last
+        ! event's where the budget ran out first)
+        if (cli%given("t_max")) call out%put("t "//real_str(run%clock%t, precision_digits))
         call out%put("status "//status_word(run%status))
         if (precision_word == "auto") then
             call out%put("precision "//auto%answered)

@@ -1,15 +1,22 @@
 !> What sphere-row watches of a run while it goes: the event table, written
 !> row by row as the events happen (constant memory, however long the run),
-!> and progress lines on stderr for a long run: every few seconds on a
-!> terminal, now and then into a file or a pipe (a log of a long job).
+!> the samples of a time series at the times asked for, and progress lines on
+!> stderr for a long run: every few seconds on a terminal, now and then into
+!> a file or a pipe (a log of a long job).
 module sphere_row_watch
     use, intrinsic :: iso_fortran_env, only: error_unit, int64
-    use sphere_row, only: qp, run_t, observer_t, state_now, itoa, event_collision, &
-        event_collapse, real_text, int_text, number_text_length, real_str
+    use sphere_row, only: qp, run_t, scene_t, observer_t, state_now, itoa, event_collision, &
+        event_collapse, event_sample, real_text, int_text, number_text_length, real_str, &
+        gaps_at_time, velocities_now
     use sphere_row_system, only: text_out_t
     implicit none
     private
-    public :: watch_t, event_header, progress_on_terminal, progress_elsewhere
+    public :: watch_t, event_header, sample_header, progress_on_terminal, progress_elsewhere
+
+    !> The columns of the samples' table (their units: T and the energy in
+    !> those of m v0^2).
+    character(len=*), parameter :: sample_header = "t"//achar(9)//"temperature"//achar(9) &
+        //"energy"//achar(9)//"collisions_per_sphere"//achar(9)//"clusters"
 
     !> Seconds between progress lines on a terminal and elsewhere (a log
     !> wants fewer), and the collisions between looks at the clock (a look
@@ -35,6 +42,14 @@ module sphere_row_watch
         !> The row being built, and its length so far.
         character(len=:), allocatable :: row
         integer :: at = 0
+        !> The samples' table (if `samples`), of the scene `scene` up to its
+        !> horizon, every `sample_every` (0: log-spaced, `per_decade` a decade
+        !> from t_max/10^decades on, after t = 0), the k-th next.
+        logical :: samples = .false.
+        type(text_out_t), pointer :: sample_out => null()
+        type(scene_t), pointer :: scene => null()
+        real(qp) :: sample_every = 0.0_qp
+        integer :: per_decade = 10, decades = 4, k = 0
     contains
         procedure :: notify => watch_notify
         procedure, private :: add_word => watch_add_word
@@ -47,8 +62,10 @@ contains
     !> V: the unit of v0; the columns as sphere_row_lines describes them),
     !> assembled in one buffer of its full length: appending column by
     !> column would copy the header once per column, time quadratic in p.
-    function event_header(p) result(line)
+    function event_header(p, last_gap) result(line)
         integer, intent(in) :: p
+        !> Gap p is carried (a wall on the right, or a ring's seam).
+        logical, intent(in) :: last_gap
         character(len=:), allocatable :: line
         character(len=*), parameter :: tab = achar(9), fixed = "event"//tab//"kind"//tab &
             //"first"//tab//"last"//tab//"t[L/V]"//tab//"w[V]"//tab//"x1[L]"//tab//"dx1[V]"
@@ -56,14 +73,17 @@ contains
         character(len=:), allocatable :: buffer
         integer :: k, n, at
         ! every column name is its prefix, at most len(itoa(p)) digits and its unit
-        allocate (character(len=len(fixed) + 2*max(p - 1, 0)*(len(itoa(p)) + 6)) :: buffer)
+        integer :: ng
+        ng = p - 1
+        if (last_gap) ng = p
+        allocate (character(len=len(fixed) + 2*max(ng, 0)*(len(itoa(p)) + 6)) :: buffer)
         buffer(:len(fixed)) = fixed
         at = len(fixed)
-        do k = 1, p - 1
+        do k = 1, ng
             call int_text(int(k, int64), digits, n)
             call put(tab//"y"//digits(:n)//"[L]")
         end do
-        do k = 1, p - 1
+        do k = 1, ng
             call int_text(int(k, int64), digits, n)
             call put(tab//"dy"//digits(:n)//"[V]")
         end do
@@ -122,6 +142,10 @@ contains
             end do
             call self%out%put(self%row(:self%at))
         end if
+        if (kind == event_sample) then
+            if (self%samples) call write_sample(self, run, w)
+            return
+        end if
         if (.not. self%progress .or. kind /= event_collision) return
         if (mod(run%n, look_every) /= 0) return
         call system_clock(now, rate)
@@ -134,6 +158,86 @@ contains
         self%last = now
         call write_progress(self, run, (now - self%started)/rate)
     end subroutine watch_notify
+
+    !> The sample at time t (the run's velocities, its gaps moved on to t): t,
+    !> the temperature sum m (v - V)^2/p (twice the kinetic energy about the
+    !> centre of mass, per sphere), the kinetic energy, the collisions per
+    !> sphere 2n/p, and the clusters: runs of two or more spheres touching
+    !> (gaps 0, a ring's seam too). The temperature and the energy are
+    !> written to the decade of their bounds (velocities_now's); then the
+    !> next sample's time.
+    subroutine write_sample(self, run, t)
+        class(watch_t), intent(inout) :: self
+        type(run_t), intent(in) :: run
+        real(qp), intent(in) :: t
+        real(qp), allocatable :: v(:), y(:)
+        real(qp) :: norm, mass, mean, temperature, energy, t_bound, e_bound
+        integer :: p, clusters, i
+        logical :: touching, before
+        p = self%scene%p
+        allocate (v(p), y(size(run%y)))
+        call velocities_now(self%scene, run, v, norm)
+        mass = sum(self%scene%m)
+        mean = sum(self%scene%m*v)/mass
+        temperature = sum(self%scene%m*(v - mean)**2)/p
+        energy = 0.5_qp*sum(self%scene%m*v**2)
+        t_bound = (2*sqrt(p*temperature)*norm + norm**2)/p
+        e_bound = sqrt(2*energy)*norm + norm**2/2
+        call gaps_at_time(run, t, y)
+        clusters = 0
+        before = .false.
+        do i = 1, p - 1
+            touching = y(i) == 0.0_qp
+            if (touching .and. .not. before) clusters = clusters + 1
+            before = touching
+        end do
+        ! (a ring's cluster across the seam is one, not two)
+        if (size(y) == p .and. self%scene%ring >= 0) then
+            if (y(p) == 0.0_qp) then
+                if (y(1) == 0.0_qp .and. y(p - 1) == 0.0_qp .and. clusters > 1) then
+                    clusters = clusters - 1
+                else if (y(1) /= 0.0_qp .and. y(p - 1) /= 0.0_qp) then
+                    clusters = clusters + 1
+                end if
+            end if
+        end if
+        call self%sample_out%put(real_str(t, precision(t) + 1)//achar(9) &
+            //earned(temperature, t_bound)//achar(9)//earned(energy, e_bound)//achar(9) &
+            //real_str(2.0_qp*real(run%n, qp)/p, 6)//achar(9)//itoa(clusters))
+        self%k = self%k + 1
+        self%wake = next_sample(self)
+    end subroutine write_sample
+
+    !> The time of sample k (k = 0 the first, at t = 0) of a table up to the
+    !> scene's horizon; huge past it.
+    pure real(qp) function next_sample(self) result(t)
+        class(watch_t), intent(in) :: self
+        integer :: last
+        t = huge(1.0_qp)
+        if (self%sample_every > 0) then
+            t = self%k*self%sample_every
+            if (t > self%scene%t_max) t = huge(1.0_qp)
+            return
+        end if
+        last = self%per_decade*self%decades
+        if (self%k == 0) then
+            t = 0
+        else if (self%k <= last + 1) then
+            t = self%scene%t_max*10.0_qp**(real(self%k - 1 - last, qp)/self%per_decade)
+        end if
+    end function next_sample
+
+    !> x written to the decade of its bound (every digit of real(16) if the
+    !> bound is 0, one if the bound reaches x's own decade).
+    pure function earned(x, bound) result(text)
+        real(qp), intent(in) :: x, bound
+        character(len=:), allocatable :: text
+        integer :: digits
+        digits = precision(x) + 1
+        if (bound > 0 .and. x /= 0) digits = max(1, min(digits, &
+            floor(log10(abs(x))) - floor(log10(bound)) + 1))
+        text = real_str(x, digits)
+    end function earned
 
     !> The progress line: the collisions against the work budget, the time
     !> reached, and the fastest rate at which neighbours still close (the

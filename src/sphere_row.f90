@@ -9,7 +9,8 @@
 module sphere_row
     use sphere_row_kinds, only: sp, dp, xdp, qp
     use sphere_row_status, only: status_normal, status_collapsed, status_max_collisions, &
-        status_invalid, event_start, event_collision, event_collapse, status_word, status_text, &
+        status_invalid, status_horizon, event_start, event_collision, event_collapse, &
+        event_sample, status_word, status_text, &
         status_word_length, answer_exact, answer_certified, answer_tolerance, answer_bounded, &
         answer_unresolved, answer_word
     use sphere_row_format, only: real_str, short_text, itoa, real_text, int_text, &
@@ -21,7 +22,8 @@ module sphere_row
         momentum_qp => momentum_wp, str_qp => str_wp, bounds_t, &
         simulate_certified_qp => simulate_certified_wp, budget_qp => budget_wp, &
         order_check_qp => order_check_wp, &
-        collapse_proven_qp => collapse_proven_wp, struck_least => struck_least_wp
+        collapse_proven_qp => collapse_proven_wp, struck_least => struck_least_wp, &
+        gaps_at_time_qp => gaps_at_time_wp, velocities_now_qp => velocities_now_wp
 #ifdef SPHERE_ROW_XDP
     use sphere_row_engine_xdp, only: scene_xdp_t => scene_t, run_xdp_t => run_t, &
         event_log_xdp_t => event_log_t, scene_init_xdp => scene_init_wp, &
@@ -30,7 +32,8 @@ module sphere_row
         momentum_xdp => momentum_wp, str_xdp => str_wp, bounds_xdp_t => bounds_t, &
         simulate_certified_xdp => simulate_certified_wp, budget_xdp => budget_wp, &
         order_check_xdp => order_check_wp, &
-        collapse_proven_xdp => collapse_proven_wp
+        collapse_proven_xdp => collapse_proven_wp, gaps_at_time_xdp => gaps_at_time_wp, &
+        velocities_now_xdp => velocities_now_wp
 #endif
     use sphere_row_engine_dp, only: scene_dp_t => scene_t, run_dp_t => run_t, &
         event_log_dp_t => event_log_t, scene_init_dp => scene_init_wp, &
@@ -39,7 +42,8 @@ module sphere_row
         momentum_dp => momentum_wp, str_dp => str_wp, bounds_dp_t => bounds_t, &
         simulate_certified_dp => simulate_certified_wp, budget_dp => budget_wp, &
         order_check_dp => order_check_wp, &
-        collapse_proven_dp => collapse_proven_wp
+        collapse_proven_dp => collapse_proven_wp, gaps_at_time_dp => gaps_at_time_wp, &
+        velocities_now_dp => velocities_now_wp
     use sphere_row_engine_sp, only: scene_sp_t => scene_t, run_sp_t => run_t, &
         event_log_sp_t => event_log_t, scene_init_sp => scene_init_wp, &
         scene_check_sp => scene_check_wp, simulate_sp => simulate_wp, &
@@ -47,7 +51,8 @@ module sphere_row
         momentum_sp => momentum_wp, str_sp => str_wp, bounds_sp_t => bounds_t, &
         simulate_certified_sp => simulate_certified_wp, budget_sp => budget_wp, &
         order_check_sp => order_check_wp, &
-        collapse_proven_sp => collapse_proven_wp
+        collapse_proven_sp => collapse_proven_wp, gaps_at_time_sp => gaps_at_time_wp, &
+        velocities_now_sp => velocities_now_wp
     use sphere_row_auto, only: auto_t, simulate_auto, simulate_in_dp
     implicit none
     private
@@ -66,7 +71,8 @@ module sphere_row
     public :: scene_sp_t, run_sp_t, event_log_sp_t
     public :: scene_init, scene_check, simulate, gaps_at, kinetic_energy, momentum, str, budget
     public :: bounds_t, bounds_dp_t, bounds_sp_t, simulate_certified, auto_t, simulate_auto
-    public :: simulate_in_dp, collapse_proven, struck_least, order_check
+    public :: simulate_in_dp, collapse_proven, struck_least, order_check, gaps_at_time, &
+        velocities_now, status_horizon, event_sample
     public :: sphere_row_version
 
     !> The package's version, as fpm.toml states it (a test compares them).
@@ -124,6 +130,24 @@ module sphere_row
         module procedure gaps_at_xdp
 #endif
     end interface gaps_at
+
+    !> The gaps of a run at a time at or after its current one (an
+    !> observer's sample between events).
+    interface gaps_at_time
+        module procedure gaps_at_time_qp, gaps_at_time_dp, gaps_at_time_sp
+#ifdef SPHERE_ROW_XDP
+        module procedure gaps_at_time_xdp
+#endif
+    end interface gaps_at_time
+
+    !> The velocities of a run as it stands, and a bound on their distance
+    !> from exact arithmetic's in the kinetic-energy norm.
+    interface velocities_now
+        module procedure velocities_now_qp, velocities_now_dp, velocities_now_sp
+#ifdef SPHERE_ROW_XDP
+        module procedure velocities_now_xdp
+#endif
+    end interface velocities_now
 
     !> Total kinetic energy of velocities v.
     interface kinetic_energy

@@ -10,9 +10,11 @@ module sphere_row_scene_keys
     use sphere_row, only: scene_t, scene_init
     use sphere_row_cli, only: cli_t, find_key, key_index, origin
     use sphere_row_read, only: printable
+    use sphere_row_gas, only: gas_state
+    use sphere_row_spheres_file, only: read_spheres
     implicit none
     private
-    public :: add_scene_keys, scene_from_cli, check_scene_in_dp, max_spheres
+    public :: add_scene_keys, add_state_keys, scene_from_cli, check_scene_in_dp, max_spheres
 
     !> Largest number of spheres: every per-sphere array of a run is allocated
     !> from p, so p is bounded to what fits in memory many times over.
@@ -72,6 +74,40 @@ contains
             //"rows scan every gap", lo=2, in_file=.true.)
     end subroutine add_scene_keys
 
+    !> Register the keys of any initial state, beyond the struck row (the
+    !> `sphere-row` CLI and the gas study): every sphere's velocity, walls, a
+    !> ring, the scene as a table, a random gas, and a horizon
+    !> (docs/scenes.md).
+    pure subroutine add_state_keys(cli)
+        type(cli_t), intent(inout) :: cli
+        call cli%add_reals("velocities", "v1,v2,...", "every sphere's initial velocity, p " &
+            //"values (instead of v0, the definition's sphere 1 at v0 and the rest at rest)", &
+            overrides="v0", in_file=.true.)
+        call cli%add_real("wall_left", "", "a fixed wall at this gap left of sphere 1 (a " &
+            //"sphere of infinite mass at rest)", lo=0.0_qp, shown="none", in_file=.true.)
+        call cli%add_real("wall_right", "", "a fixed wall at this gap right of sphere p", &
+            lo=0.0_qp, shown="none", in_file=.true.)
+        call cli%add_real("e_wall", "", "the restitution of a collision with a wall", &
+            lo=0.0_qp, hi=1.0_qp, shown="e", in_file=.true.)
+        call cli%add_real("ring", "", "the row closed into a ring: sphere p meets sphere 1 " &
+            //"across this gap (not with walls)", lo=0.0_qp, shown="none", in_file=.true.)
+        call cli%add_word("spheres", "", "the scene as a table FILE.tsv: a header line " &
+            //"x<TAB>v<TAB>m, then one sphere a line (its position, velocity and mass), " &
+            //"positions increasing by at least d (instead of p, gaps, masses, velocities)")
+        call cli%add_choice("gas", "no", [character(len=4) :: "no", "ring", "box"], &
+            "a random gas of p spheres on a ring, or in a box (walls at both ends): placed " &
+            //"uniformly at `density`, Gaussian velocities of `temperature`, zero momentum, " &
+            //"from `seed` (the same on any number of threads or ranks)")
+        call cli%add_real("density", "0.5", "the gas's spheres per unit length (density d < 1)", &
+            lo=0.0_qp, lo_open=.true., in_file=.true.)
+        call cli%add_real("temperature", "1", "the gas's temperature m <(v - V)^2> at t = 0", &
+            lo=0.0_qp, lo_open=.true., in_file=.true.)
+        call cli%add_int("seed", "1", "the gas's random seed", lo=0, in_file=.true.)
+        call cli%add_real("t_max", "", "the horizon: the run stops at this time and gives the " &
+            //"state then (a ring or a box with e < 1 has no end)", lo=0.0_qp, lo_open=.true., &
+            shown="none", in_file=.true.)
+    end subroutine add_state_keys
+
     !> The scene the scene keys of `cli` describe. Beyond each key's own range,
     !> the lists must have p and p-1 values, and the scene's scales must be
     !> finite in real(16) so that no time, position or velocity of the run
@@ -83,7 +119,8 @@ contains
         type(cli_t), intent(in) :: cli
         type(scene_t), intent(out) :: scene
         type(error_t), allocatable, intent(out) :: error
-        real(qp), allocatable :: masses(:), gaps(:)
+        real(qp), allocatable :: masses(:), gaps(:), velocities(:), v0, x1, wall_left, &
+            wall_right, e_wall, ring, t_max
         type(scene_t) :: defaults
         real(qp) :: e
         integer :: p, stat
@@ -91,6 +128,13 @@ contains
         p = cli%get_int("p")
         e = defaults%e
         if (find_key(cli, "e") > 0) e = cli%get_real("e")
+        v0 = cli%get_real("v0")
+        if (find_key(cli, "velocities") > 0) then
+            call state_from_cli(cli, p, masses, gaps, velocities, x1, wall_left, wall_right, &
+                e_wall, ring, t_max, error)
+            if (allocated(error)) return
+            if (allocated(velocities)) deallocate (v0)
+        end if
         if (cli%given("masses")) then
             masses = cli%get_reals("masses")
             if (size(masses) /= p) then
@@ -111,18 +155,133 @@ contains
                 return
             end if
         end if
-        call check_scales(cli, p, cli%get_real("d"), cli%get_real("v0"), masses, gaps, &
-            huge(1.0_qp), "real(16)", error)
+        if (allocated(velocities)) then
+            call check_scales(cli, p, cli%get_real("d"), max(maxval(abs(velocities)), &
+                tiny(1.0_qp)), masses, gaps, huge(1.0_qp), "real(16)", error, "velocities")
+        else
+            call check_scales(cli, p, cli%get_real("d"), cli%get_real("v0"), masses, gaps, &
+                huge(1.0_qp), "real(16)", error)
+        end if
         if (allocated(error)) return
         ! masses or gaps not given are absent here (not allocated): scene_init
-        ! makes them equal in the scene's own arrays, with no copy of p reals
+        ! makes them equal in the scene's own arrays, with no copy of p reals;
+        ! so are the keys of any initial state that are not given
         call scene_init(scene, stat, msg, p=p, e=e, d=cli%get_real("d"), &
-            a=cli%get_real("a"), v0=cli%get_real("v0"), tol=cli%get_real("tol"), &
-            max_collisions=cli%get_int("max_collisions"), masses=masses, gaps=gaps)
+            a=cli%get_real("a"), v0=v0, tol=cli%get_real("tol"), &
+            max_collisions=cli%get_int("max_collisions"), masses=masses, gaps=gaps, &
+            velocities=velocities, x1=x1, wall_left=wall_left, wall_right=wall_right, &
+            e_wall=e_wall, ring=ring, t_max=t_max)
         if (stat /= status_normal) call fatal_error(error, trim(msg))
         scene%calendar_from = cli%get_int("calendar_from")
         scene%vtol = cli%get_real("vtol")
     end subroutine scene_from_cli
+
+    !> The keys of any initial state (add_state_keys), read into the scene's
+    !> parts: each left unallocated where its key is not given. A table
+    !> (spheres) sets p, x1, the gaps, velocities and masses; a gas the gaps
+    !> (its ring's or its box's walls among them) and the velocities. Keys that
+    !> cannot go together are refused in one line naming both.
+    subroutine state_from_cli(cli, p, masses, gaps, velocities, x1, wall_left, wall_right, &
+        e_wall, ring, t_max, error)
+        type(cli_t), intent(in) :: cli
+        integer, intent(inout) :: p
+        real(qp), allocatable, intent(inout) :: masses(:), gaps(:)
+        real(qp), allocatable, intent(out) :: velocities(:), x1, wall_left, wall_right, &
+            e_wall, ring, t_max
+        type(error_t), allocatable, intent(out) :: error
+        character(len=:), allocatable :: gas, path
+        real(qp), allocatable :: free(:)
+        integer :: i
+        logical :: ok
+        character(len=*), parameter :: placed(*) = [character(len=10) :: "p", "gaps", "a", &
+            "masses", "velocities", "v0"], gas_set(*) = [character(len=10) :: "gaps", "a", &
+            "velocities", "v0", "ring", "wall_left", "wall_right", "spheres"], &
+            gas_keys(*) = [character(len=11) :: "density", "temperature", "seed"]
+        gas = cli%get_word("gas")
+        path = cli%get_word("spheres")
+        if (cli%given("spheres")) then
+            do i = 1, size(placed)
+                if (.not. cli%given(trim(placed(i)))) cycle
+                call both("spheres", trim(placed(i)), "the table gives p, the gaps, the " &
+                    //"masses and the velocities")
+                return
+            end do
+        end if
+        if (gas /= "no") then
+            do i = 1, size(gas_set)
+                if (.not. cli%given(trim(gas_set(i)))) cycle
+                call both("gas", trim(gas_set(i)), "the gas gives the gaps, its ring's or " &
+                    //"walls' among them, and the velocities")
+                return
+            end do
+        else
+            do i = 1, size(gas_keys)
+                if (.not. cli%given(trim(gas_keys(i)))) cycle
+                call fatal_error(error, trim(gas_keys(i))//" = "//printable(cli%get_text( &
+                    trim(gas_keys(i))))//": a key of the random gas; allowed only with " &
+                    //"gas = ring or gas = box")
+                return
+            end do
+        end if
+        if (cli%given("ring")) then
+            if (cli%given("wall_left")) call both("ring", "wall_left", "a ring has no ends")
+            if (cli%given("wall_right")) call both("ring", "wall_right", "a ring has no ends")
+            if (allocated(error)) return
+        end if
+        if (cli%given("velocities")) then
+            velocities = cli%get_reals("velocities")
+            if (size(velocities) /= p) then
+                call fatal_error(error, origin(cli%keys(key_index(cli, "velocities"))) &
+                    //"velocities = "//printable(cli%get_text("velocities"))//": " &
+                    //itoa(size(velocities))//" values given; allowed exactly p = "//itoa(p) &
+                    //" values")
+                return
+            end if
+        end if
+        if (cli%given("wall_left")) wall_left = cli%get_real("wall_left")
+        if (cli%given("wall_right")) wall_right = cli%get_real("wall_right")
+        if (cli%given("e_wall")) e_wall = cli%get_real("e_wall")
+        if (cli%given("ring")) ring = cli%get_real("ring")
+        if (cli%given("t_max")) t_max = cli%get_real("t_max")
+        if (cli%given("spheres")) then
+            allocate (x1)
+            call read_spheres(path, cli%get_real("d"), x1, gaps, velocities, masses, error)
+            if (allocated(error)) return
+            p = size(velocities)
+            if (p > max_spheres) then
+                call fatal_error(error, "spheres = "//printable(path)//": "//itoa(p) &
+                    //" spheres; allowed at most "//itoa(max_spheres))
+                return
+            end if
+        end if
+        if (gas == "no") return
+        if (.not. allocated(masses)) allocate (masses(p), source=1.0_qp)
+        allocate (velocities(p), free(merge(p, p + 1, gas == "ring")))
+        call gas_state(p, cli%get_real("d"), masses, cli%get_real("density"), &
+            cli%get_real("temperature"), int(cli%get_int("seed"), kind(1_8)), free, &
+            velocities, ok)
+        if (.not. ok) then
+            call fatal_error(error, "density = "//printable(cli%get_text("density"))//" with d = " &
+                //printable(cli%get_text("d"))//": no room between the spheres; allowed " &
+                //"density d < 1")
+            return
+        end if
+        if (gas == "ring") then
+            gaps = free(:p - 1)
+            ring = free(p)
+        else
+            wall_left = free(1)
+            gaps = free(2:p)
+            wall_right = free(p + 1)
+        end if
+    contains
+        !> Keys a and b given together, refused.
+        subroutine both(a, b, why)
+            character(len=*), intent(in) :: a, b, why
+            call fatal_error(error, a//" = "//printable(cli%get_text(a))//" with "//b//" = " &
+                //printable(cli%get_text(b))//": allowed one of them ("//why//")")
+        end subroutine both
+    end subroutine state_from_cli
 
     !> Refuse a scene that a run in real(8) (precision = dp) cannot carry:
     !> every value not 0 must be a normal real(8) (a subnormal one keeps
@@ -142,6 +301,8 @@ contains
         if (.not. allocated(error)) call check_values(gap_key, scene%a)
         if (.not. allocated(error)) call check_values("v0", [scene%v0])
         if (.not. allocated(error)) call check_values("masses", scene%m)
+        if (allocated(scene%v) .and. .not. allocated(error)) call check_values("velocities", &
+            scene%v)
         if (allocated(error)) return
         call check_scales(cli, scene%p, scene%d, scene%v0, scene%m, scene%a, &
             real(huge(1.0_dp), qp), "real(8) (precision = dp)", error)
@@ -161,7 +322,7 @@ contains
             do i = 1, size(xs)
                 if (xs(i) == 0.0_qp .or. (abs(xs(i)) >= low .and. abs(xs(i)) <= top)) cycle
                 which = "precision = dp: "
-                if (name == "masses" .or. name == "gaps") then
+                if (name == "masses" .or. name == "gaps" .or. name == "velocities") then
                     which = which//"value "//itoa(i)//" is "//short_text(xs(i))//": "
                 end if
                 if (abs(xs(i)) > top) then
@@ -182,26 +343,38 @@ contains
     !> `masses` and `gaps` are read only where their keys are given: a row of
     !> equal gaps (the key a) or of equal masses has its sums in one product
     !> each, with no pass over p reals of real(16).
-    subroutine check_scales(cli, p, d, v0, masses, gaps, big, kind_name, error)
+    subroutine check_scales(cli, p, d, v0, masses, gaps, big, kind_name, error, v0_key)
         type(cli_t), intent(in) :: cli
         integer, intent(in) :: p
         real(qp), intent(in) :: d, v0, big
         real(qp), intent(in), optional :: masses(:), gaps(:)
         character(len=*), intent(in) :: kind_name
         type(error_t), allocatable, intent(out) :: error
+        !> The key that sets the velocity scale (v0, or velocities).
+        character(len=*), intent(in), optional :: v0_key
         character(len=*), parameter :: row_text = "(p-1) d + sum(gaps)", &
             spread_text = "(1 + 2 sum(m)/min(m)) ((p-1) d + sum(gaps))"
         real(qp) :: row, gap_sum, diameters, ratio
-        character(len=:), allocatable :: gap_key, limit, culprit
+        character(len=:), allocatable :: gap_key, limit, culprit, vkey
+        logical :: table
         limit = short_text(big, 3, "down")
+        vkey = "v0"
+        if (present(v0_key)) vkey = v0_key
         gap_key = "a"
         if (cli%given("gaps")) gap_key = "gaps"
-        if (cli%given("gaps")) then
+        ! (a table or a gas gives the gaps and masses of any initial state)
+        table = .false.
+        if (find_key(cli, "spheres") > 0) then
+            if (cli%given("spheres")) gap_key = "spheres"
+            if (cli%get_word("gas") /= "no") gap_key = "density"
+            table = gap_key == "spheres" .or. gap_key == "density"
+        end if
+        if (cli%given("gaps") .or. table) then
             gap_sum = sum(gaps)
         else
             gap_sum = real(p - 1, qp)*cli%get_real("a")
         end if
-        if (cli%given("masses")) then
+        if (cli%given("masses") .or. (table .and. present(masses))) then
             ratio = sum(masses)/minval(masses)
         else
             ratio = real(p, qp)
@@ -217,7 +390,7 @@ contains
             return
         end if
         if (.not. (gap_sum/v0 <= big)) then
-            call refuse_scale(error, cli, "v0", "the time scale sum(gaps)/v0 overflows " &
+            call refuse_scale(error, cli, vkey, "the time scale sum(gaps)/v0 overflows " &
                 //kind_name//" (sum(gaps) = "//short_text(gap_sum, 3)//"); allowed v0 >= " &
                 //short_text(gap_sum/big, 3, "up"))
             return
@@ -229,7 +402,7 @@ contains
             return
         end if
         if (.not. (2.0_qp*ratio*v0 <= big)) then
-            call refuse_scale(error, cli, "v0", "the velocity scale 2 v0 sum(m)/min(m) " &
+            call refuse_scale(error, cli, vkey, "the velocity scale 2 v0 sum(m)/min(m) " &
                 //"overflows "//kind_name//"; allowed v0 <= " &
                 //short_text(big/(2.0_qp*ratio), 3, "down"))
             return

@@ -6,8 +6,8 @@ module sphere_row_status
     implicit none
     private
     public :: status_normal, status_collapsed, status_max_collisions, status_invalid
-    public :: status_negative_gap, status_budget, status_solver_failed
-    public :: event_start, event_collision, event_collapse
+    public :: status_negative_gap, status_budget, status_solver_failed, status_horizon
+    public :: event_start, event_collision, event_collapse, event_sample
     public :: status_word, status_text, status_word_length
     public :: answer_exact, answer_certified, answer_tolerance, answer_bounded, &
         answer_unresolved, answer_word
@@ -33,11 +33,19 @@ module sphere_row_status
     !> The ODE solver (GSL) returned an error; the message says which.
     integer, parameter :: status_solver_failed = 6
 
+    !> The run reached its horizon t_max with collisions still to come: the
+    !> state returned is the one at t_max (a ring or a box with e < 1 has no
+    !> end; a row that separated before t_max ends normal).
+    integer, parameter :: status_horizon = 7
+
     !> Length of the buffer of status_text, enough for every status word.
     integer, parameter :: status_word_length = 16
 
     !> Event kinds of the optional event record.
     integer, parameter :: event_start = 0, event_collision = 1, event_collapse = 2
+    !> An observer's sample time reached (observer_t%wake): not an event of
+    !> the run, and never in its event log.
+    integer, parameter :: event_sample = 3
 
     !> How good an answer is, from the best to the weakest; a run's answer is
     !> the weakest of its end and its collapse limits.
@@ -115,6 +123,8 @@ contains
             text = "budget_exhausted"
         case (status_solver_failed)
             text = "solver_failed"
+        case (status_horizon)
+            text = "horizon"
         case default
             text = "unknown"
         end select

@@ -193,6 +193,13 @@ contains
         low%closed_form_limits = scene%closed_form_limits
         low%calendar_from = scene%calendar_from
         low%vtol = real(scene%vtol, dp)
+        if (allocated(scene%v)) low%v = real(scene%v, dp)
+        low%x1 = real(scene%x1, dp)
+        low%wall_left = real(scene%wall_left, dp)
+        low%wall_right = real(scene%wall_right, dp)
+        low%e_wall = real(scene%e_wall, dp)
+        low%ring = real(scene%ring, dp)
+        low%t_max = real(scene%t_max, dp)
     end subroutine to_dp
 
     !> A real64 run's results in a real128 run.

@@ -7,7 +7,8 @@ module sphere_row_engine_qp
     use sphere_row_policy, only: policy
     use sphere_row_cascade, only: ordered_cascade_merges, cascade_kind
     use sphere_row_status, only: status_normal, status_collapsed, status_max_collisions, &
-        status_invalid, event_start, event_collision, event_collapse, answer_exact, &
+        status_invalid, status_horizon, event_start, event_collision, event_collapse, &
+        event_sample, answer_exact, &
         answer_certified, answer_tolerance, answer_bounded, answer_unresolved
     implicit none
     private
