@@ -195,6 +195,7 @@ check-docs: prereqs ## check README.md and docs/: quoted numbers, links, command
 # engine's), one per core.
 test: prereqs check-layers $(INC_STAMP) ## run both packages' tests; last line: N passed, N failed
 	@mkdir -p build
+	@bash .ci/prereqs replay
 	@set -o pipefail; status=0; \
 	(cd study && $(FPM) test $(TEST_FLAGS) $(if $(TEST_ARGS),-- $(TEST_ARGS))) \
 		> build/test-study.log 2>&1 & study=$$!; \

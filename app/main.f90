@@ -413,6 +413,7 @@ contains
             do j = 1, size(run%active, 2)
                 groups = groups//" "//itoa(run%active(1, j))//"-"//itoa(run%active(2, j))
             end do
+            if (len(groups) == 0) groups = " none"
             call out%put("active"//groups)
         end if
         call write_velocities()

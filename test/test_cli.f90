@@ -17,6 +17,8 @@ contains
         type(unittest_t), allocatable :: tests(:)
         tests = [ &
             new_unittest("bad_input_refused", test_bad_input), &
+            new_unittest("bad_scene_keys_refused", test_bad_scene_keys), &
+            new_unittest("spheres_table_runs", test_spheres_table), &
             new_unittest("definition_scene_output", test_good_output), &
             new_unittest("namelist_file", test_namelist), &
             new_unittest("event_table", test_events), &
@@ -96,6 +98,98 @@ contains
                 trim(cases(1, i))//": message does not name the key: "//err)
         end do
     end subroutine test_bad_input
+
+    !> Each bad input of the keys of any initial state (velocities, walls, a
+    !> ring, a table of spheres, a gas, a horizon, samples): exit status 2, one
+    !> stderr line naming the key, no stdout, and no samples file left.
+    subroutine test_bad_scene_keys(error)
+        type(error_t), allocatable, intent(out) :: error
+        character(len=*), parameter :: tsv = "build/test_samples.tsv"
+        character(len=*), parameter :: cases(*, *) = reshape([character(len=64) :: &
+            "velocities=1,2", "velocities", &
+            "v0=2 velocities=1,0,0,0", "v0", &
+            "velocities=1,x,0,0", "velocities", &
+            "ring=1 wall_left=1", "ring", &
+            "ring=1 wall_right=0", "ring", &
+            "wall_left=-1", "wall_left", &
+            "wall_right=inf", "wall_right", &
+            "e_wall=1.5", "e_wall", &
+            "t_max=0", "t_max", &
+            "t_max=-1", "t_max", &
+            "spheres=build/test_overlap.tsv", "line 3", &
+            "spheres=build/test_bad_line.tsv", "line 2", &
+            "spheres=build/test_bad_header.tsv", "header", &
+            "spheres=build/no_such_table.tsv", "spheres", &
+            "spheres=build/test_overlap.tsv p=3", "spheres", &
+            "gas=ring density=2", "density", &
+            "density=0.3", "density", &
+            "gas=ring gaps=1,1,1", "gas", &
+            "gas=box velocities=1,1,1,1", "gas", &
+            "gas=cube", "gas", &
+            "samples="//tsv, "samples", &
+            "samples="//tsv//" t_max=1 precision=dp", "samples", &
+            "sample_every=1 t_max=1", "sample_every"], [2, 23])
+        integer :: i, status, unit
+        logical :: there
+        character(len=:), allocatable :: out, err
+        open (newunit=unit, file="build/test_overlap.tsv", status="replace", action="write")
+        write (unit, "(a)") "x"//achar(9)//"v"//achar(9)//"m", "0"//achar(9)//"1"//achar(9) &
+            //"1", "0.5"//achar(9)//"0"//achar(9)//"1"
+        close (unit)
+        open (newunit=unit, file="build/test_bad_line.tsv", status="replace", action="write")
+        write (unit, "(a)") "x"//achar(9)//"v"//achar(9)//"m", "0"//achar(9)//"1", &
+            "3"//achar(9)//"0"//achar(9)//"1"
+        close (unit)
+        open (newunit=unit, file="build/test_bad_header.tsv", status="replace", action="write")
+        write (unit, "(a)") "x v m", "0"//achar(9)//"1"//achar(9)//"1", &
+            "3"//achar(9)//"0"//achar(9)//"1"
+        close (unit)
+        call execute_command_line("rm -f "//tsv)
+        do i = 1, size(cases, 2)
+            call run_cli(trim(cases(1, i)), status, out, err)
+            call check(error, status == 2, trim(cases(1, i))//": exit status not 2")
+            if (allocated(error)) return
+            call check(error, len(out) == 0, trim(cases(1, i))//": wrote to stdout")
+            if (allocated(error)) return
+            call check(error, count_lines(err) == 1, trim(cases(1, i))//": not one stderr line")
+            if (allocated(error)) return
+            call check(error, index(err, trim(cases(2, i))) > 0, &
+                trim(cases(1, i))//": message does not name "//trim(cases(2, i))//": "//err)
+            if (allocated(error)) return
+            inquire (file=tsv, exist=there)
+            call check(error, .not. there, trim(cases(1, i))//": left a samples file")
+            if (allocated(error)) return
+        end do
+    end subroutine test_bad_scene_keys
+
+    !> A table of spheres runs as the same scene given by keys: the same
+    !> answer, line for line, and a samples table with its header, from t =
+    !> 0 to t_max.
+    subroutine test_spheres_table(error)
+        type(error_t), allocatable, intent(out) :: error
+        character(len=*), parameter :: tsv = "build/test_samples.tsv"
+        integer :: status, unit
+        character(len=:), allocatable :: out, err, out_keys, samples
+        open (newunit=unit, file="build/test_spheres.tsv", status="replace", action="write")
+        write (unit, "(a)") "x"//achar(9)//"v"//achar(9)//"m", &
+            "0"//achar(9)//"1"//achar(9)//"1", "2.5"//achar(9)//"0"//achar(9)//"2", &
+            "4"//achar(9)//"-0.5"//achar(9)//"1"
+        close (unit)
+        call run_cli("spheres=build/test_spheres.tsv e=0.5 wall_right=1 t_max=10 samples=" &
+            //tsv, status, out, err)
+        call check(error, status == 0 .and. len(err) == 0, "spheres table: exit status " &
+            //itoa_local(status)//": "//err)
+        if (allocated(error)) return
+        call run_cli("p=3 e=0.5 gaps=1.5,0.5 masses=1,2,1 velocities=1,0,-0.5 wall_right=1 " &
+            //"t_max=10", status, out_keys, err)
+        call check(error, out == out_keys, "spheres table: the answer differs from the keys'")
+        if (allocated(error)) return
+        samples = read_text(tsv)
+        call check(error, index(samples, "t"//achar(9)//"temperature"//achar(9)//"energy" &
+            //achar(9)//"collisions_per_sphere"//achar(9)//"clusters"//new_line("a")) == 1 &
+            .and. count_lines(samples) == 43, "spheres table: the samples' table: " &
+            //samples(:min(200, len(samples))))
+    end subroutine test_spheres_table
 
     !> `sphere-row e=0.2` prints the whole answer, one quantity per line.
     subroutine test_good_output(error)

@@ -95,7 +95,7 @@ contains
             //" "//r%keys//" > "//out_file, exitstat=stat)
         call check(error, stat == 0, r%why//": tools/replay failed on "//r%keys)
         if (allocated(error)) return
-        call read_text(out_file, text)
+        text = read_text(out_file)
         call split_tabs(text, fields)
         engine_seq = pack(log%first(1:log%n), log%kind(1:log%n) == event_collision)
         call read_ints(seq_file, replay_seq)
@@ -211,7 +211,7 @@ contains
             call check(error, stat == status_normal, "ring ledger: "//trim(msg))
             if (allocated(error)) return
             call simulate(scene, run, log)
-            call check(error, run%status == status_horizon .and. run%n > 50, &
+            call check(error, run%status == status_horizon .and. run%n > 20, &
                 "ring ledger: e = "//str(es(j))//": "//itoa(run%n)//" collisions, status " &
                 //itoa(run%status))
             if (allocated(error)) return

@@ -17,7 +17,9 @@ each key written with more digits than real(16) holds), numbers that are not
 numbers, words with blanks around them, control bytes and bytes beyond ASCII,
 long lists of the right and wrong lengths; mutations (bytes flipped, cut,
 doubled) of valid command lines; scene files, valid and mutated, with junk,
-comments, long runs of line ends, given by name or on standard input; paths
+comments, long runs of line ends, given by name or on standard input; the
+keys of any initial state (velocities, walls, a ring, a random gas, a
+horizon) and tables of spheres (spheres=FILE), valid and mutated; paths
 that are not regular files. Every input is made from the seed alone, so a
 failure is reproduced by the same seed and count (each failure is also
 printed with its arguments and file).
@@ -43,7 +45,11 @@ PROGRAM = "sphere-row"
 # every key of sphere-row and what its values may look like
 SCENE_KEYS = ["p", "e", "d", "a", "gaps", "v0", "masses", "tol", "max_collisions",
               "calendar_from"]
-KEYS = SCENE_KEYS + ["events", "precision"]
+# the keys of any initial state: velocities, walls, a ring, a random gas, a
+# horizon (a table of spheres comes as a file: make_case)
+STATE_KEYS = ["velocities", "wall_left", "wall_right", "e_wall", "ring", "gas", "density",
+              "temperature", "seed", "t_max"]
+KEYS = SCENE_KEYS + STATE_KEYS + ["events", "precision"]
 
 # numbers at the edges: of real(16) (huge, tiny, subnormal), of real(8),
 # of each key's range, written with more digits than real(16) holds
@@ -101,19 +107,34 @@ def small_value(rng, key):
         return str(rng.randint(2, 64))
     if key == "events":
         return rng.choice(["yes", "no"])
+    if key in ("wall_left", "wall_right", "ring"):
+        return rng.choice(["0", "0.5", "1", "3", "%.4g" % rng.uniform(0, 5)])
+    if key == "e_wall":
+        return rng.choice(["0", "0.3", "1", "%.6f" % rng.random()])
+    if key == "gas":
+        return rng.choice(["ring", "box", "no"])
+    if key == "density":
+        return rng.choice(["0.1", "0.5", "0.9", "%.4g" % rng.uniform(0.01, 0.99)])
+    if key == "temperature":
+        return rng.choice(["1", "0.01", "100", "%.4g" % rng.uniform(0.1, 10)])
+    if key == "seed":
+        return str(rng.randint(0, 2 ** 31 - 1))
+    if key == "t_max":
+        return rng.choice(["0.1", "1", "10", "%.4g" % rng.uniform(0.01, 30)])
     return rng.choice(["qp", "dp", "auto"])
 
 
 def value(rng, key, p):
     """A value for `key`: small and valid, at an edge, junk, or a list."""
     roll = rng.random()
-    if key in ("masses", "gaps"):
-        n = p if key == "masses" else p - 1
+    if key in ("masses", "gaps", "velocities"):
+        n = p - 1 if key == "gaps" else p
         n = rng.choice([n, n, n, n - 1, n + 1, 0, 1, max(0, n * 3)])
+        low = -5 if key == "velocities" else 0.1
         if roll < 0.5:
-            return ",".join("%.4g" % rng.uniform(0.1, 10) for _ in range(n))
+            return ",".join("%.4g" % rng.uniform(low, 10) for _ in range(n))
         return ",".join(number(rng) if rng.random() < 0.3 else "1" for _ in range(n))
-    if key in ("events", "precision"):
+    if key in ("events", "precision", "gas"):
         return rng.choice(WORDS) if roll < 0.4 else small_value(rng, key)
     if roll < 0.5:
         return small_value(rng, key)
@@ -160,9 +181,10 @@ def valid_pairs(rng):
     for key in rng.sample(KEYS[1:], rng.randint(0, 5)):
         if key == "p" or key == "max_collisions":
             continue
-        if key in ("masses", "gaps"):
-            n = p if key == "masses" else p - 1
-            pairs.append((key, ",".join("%.3g" % rng.uniform(0.2, 5) for _ in range(n))))
+        if key in ("masses", "gaps", "velocities"):
+            n = p - 1 if key == "gaps" else p
+            low = -5 if key == "velocities" else 0.2
+            pairs.append((key, ",".join("%.3g" % rng.uniform(low, 5) for _ in range(n))))
         elif key == "a" and any(k == "gaps" for k, _ in pairs):
             continue
         else:
@@ -190,10 +212,11 @@ class Case:
     """One input: the arguments and, if any, a scene file's bytes and whether it
     goes to standard input."""
 
-    def __init__(self, args, file_bytes=None, stdin=False):
+    def __init__(self, args, file_bytes=None, stdin=False, table=False):
         self.args = args
         self.file_bytes = file_bytes
         self.stdin = stdin
+        self.table = table
 
 
 def make_case(rng, index):
@@ -236,6 +259,18 @@ def make_case(rng, index):
             extra = [("%s=%s" % kv).encode() for kv in valid_pairs(rng)[1:2]]
         stdin = rng.random() < 0.3
         return Case(extra, file_bytes=text, stdin=stdin)
+    if kind < 0.95:
+        # a table of spheres (spheres=FILE), valid or mutated, with keys of a scene
+        p = rng.choice([2, 3, 5, 8])
+        x, rows = 0.0, ["x\tv\tm"]
+        for _ in range(p):
+            rows.append("%.6g\t%.6g\t%.4g" % (x, rng.uniform(-2, 2), rng.uniform(0.1, 5)))
+            x += 1 + rng.choice([0.0, rng.uniform(0, 2)])
+        text = ("\n".join(rows) + "\n").encode()
+        if rng.random() < 0.6:
+            text = mutate(rng, text)
+        extra = [("%s=%s" % kv).encode() for kv in valid_pairs(rng)[1:3] if kv[0] != "p"]
+        return Case(extra, file_bytes=text, table=True)
     # paths that are not scene files, and odd argument lists
     roll = rng.random()
     if roll < 0.5:
@@ -349,7 +384,9 @@ def run_case(binary, workdir, index, case, timeout):
         path = os.path.join(workdir, "scene%d.nml" % index)
         with open(path, "wb") as f:
             f.write(case.file_bytes)
-        if case.stdin:
+        if case.table:
+            args = [b"spheres=" + path.encode()] + args
+        elif case.stdin:
             args = [b"-"] + args
             stdin = open(path, "rb")
         else:
