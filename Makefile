@@ -25,6 +25,8 @@
 #   make bench           speed: the cost study (cost.tsv, the engine against the tight
 #                        loop in cost_vs_loop.tsv, their figures) and bench.tsv
 #   make check-results   regenerate the study elsewhere and compare with results/
+#   make gas-full        the freely cooling ring of 10^5 rods at e = 0.99, 0.9, 0.5 into
+#                        results/gas_full/ (tens of minutes)
 #   make grid            the collapse region: struck rows p = 50 ... 10^5 at e = 0.2 ...
 #                        0.95, results/collapse_grid.tsv and its answer map (minutes)
 #   make ecrit-full      the full e_c(p) sweep, p = 3 ... 128, into results/ecrit_full/
@@ -126,7 +128,13 @@ ECRIT_FULL_CHECK_P := 6
 # `make study`, and not compared by check-results
 COST := $(RESULTS)/cost.tsv $(RESULTS)/cost_summary.tsv $(RESULTS)/cost_vs_loop.tsv
 ECRIT_REPLAY := $(RESULTS)/ecrit_replay.tsv
-TABLES := $(A1) $(A2) $(B1) $(B2) $(C1) $(C2) $(METHODS) $(COLLAPSE) $(ECRIT) $(ECRIT_REPLAY)
+# the freely cooling ring (c12-gas) at make study's size; the larger rings
+# behind make gas-full, into results/gas_full/
+GAS := $(RESULTS)/gas_haff.tsv $(RESULTS)/gas_answers.tsv $(TIMING)/gas_runs.tsv
+GAS_FULL := results/gas_full
+GAS_FULL_KEYS := p=100000 es=0.99,0.9,0.5 max_collisions=100000000
+TABLES := $(A1) $(A2) $(B1) $(B2) $(C1) $(C2) $(METHODS) $(COLLAPSE) $(ECRIT) $(ECRIT_REPLAY) \
+          $(GAS)
 ANSWERS := $(filter %_answers.tsv,$(TABLES))
 
 # the space-time diagrams (c12-spacetime, study/spacetime.gp): the definition's
@@ -142,14 +150,15 @@ SPACETIME_TABLES := $(foreach s,$(SPACETIME),$(foreach t,lines collisions collap
                     $(SPACETIME_DIR)/$(s)_$(t).tsv))
 
 FIGURES := a1_paths b1_n b1_critical b2_velocities c1_secant c2_ecdf c2_histogram collapse_by_p \
-           c2_convergence ecrit ecrit_map
+           c2_convergence ecrit ecrit_map gas_haff gas_collisions
 PNG := $(FIGURES:%=$(RESULTS)/%.png) $(TIMING)/methods_work_precision.png \
        $(RESULTS)/methods_stability.png $(SPACETIME:%=$(RESULTS)/%.png)
 SVG := $(FIGURES:%=$(RESULTS)/%.svg) $(TIMING)/methods_work_precision.svg \
        $(RESULTS)/methods_stability.svg $(SPACETIME:%=$(RESULTS)/%.svg)
 
 .PHONY: all help prereqs replay install uninstall check-docs test-tools test test-long test-times mutants differential readme-commands test-mpi check-layers study tables \
-        figures bench callgrind check-results docs lint clean fuzz plot examples ecrit-full grid
+        figures bench callgrind check-results docs lint clean fuzz plot examples ecrit-full grid \
+        gas-full
 
 all: study
 
@@ -353,6 +362,8 @@ $(ECRIT_REPLAY): $(ECRIT) $(CLI_STAMP) tools/replay tools/replay-ecrit
 	python3 tools/replay-ecrit $(RESULTS) p_max=6 sphere_row=$(abspath $(BIN))/sphere-row
 $(COST) &: $(BUILD_STAMP)
 	$(call study_run,c12-cost)
+$(GAS) &: $(BUILD_STAMP)
+	$(call study_run,c12-gas)
 
 $(RESULTS)/answers.tsv $(RESULTS)/summary.md &: $(ANSWERS) $(BUILD_STAMP)
 	$(BIN)/c12-summary out=$(RESULTS)
@@ -381,6 +392,8 @@ $(RESULTS)/ecrit.png $(RESULTS)/ecrit.svg: $(ECRIT)
 $(RESULTS)/ecrit_map.png $(RESULTS)/ecrit_map.svg: $(ECRIT)
 $(RESULTS)/cost.png $(RESULTS)/cost.svg: $(COST)
 $(RESULTS)/cost_loop.png $(RESULTS)/cost_loop.svg: $(COST)
+$(RESULTS)/gas_haff.png $(RESULTS)/gas_haff.svg: $(GAS)
+$(RESULTS)/gas_collisions.png $(RESULTS)/gas_collisions.svg: $(GAS)
 
 # the space-time diagrams: one run of c12-spacetime writes a scene's four
 # tables, the script draws both formats in one run
@@ -439,6 +452,15 @@ grid: prereqs $(BUILD_STAMP) ## the collapse region: p = 50 ... 10^5 by e = 0.2 
 	$(call study_run,c12-grid)
 	set -e; for t in png svg; do \
 		gnuplot -e "dir='$(RESULTS)'; term='$$t'; out='$(RESULTS)/collapse_grid.$$t'" study/collapse_grid.gp; done
+
+# the cooling ring at 10^5 rods (GAS_FULL_KEYS), its tables and figures in
+# results/gas_full/ (tens of minutes: the rings at e = 0.9 and 0.5 spend
+# their collapses' budgets)
+gas-full: prereqs $(BUILD_STAMP) ## the cooling ring of 10^5 rods into results/gas_full/
+	@mkdir -p $(GAS_FULL)
+	$(BIN)/c12-gas $(GAS_FULL_KEYS) out=$(GAS_FULL)
+	set -e; for f in gas_haff gas_collisions; do for t in png svg; do \
+		gnuplot -e "dir='$(GAS_FULL)'; term='$$t'; out='$(GAS_FULL)/$$f.$$t'" study/$$f.gp; done; done
 
 # the full e_c(p) sweep: its tables, its two figures, and sweep.tsv with its
 # wall time, ranks and threads (MPI=1 NP=... for ranks; OMP_NUM_THREADS threads)

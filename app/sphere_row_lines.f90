@@ -36,10 +36,12 @@ contains
         lines = [ &
             entry("collisions", "binary collisions of the run"), &
             entry("t_end", "time of the last event, collision or collapse limit [L/V]"), &
+            entry("t", "with t_max only: the time of the state below [L/V] (t_max, or the " &
+            //"last event's where the budget ran out first)"), &
             entry("status", "normal (no pair closes any more), quasi_plastic (the " &
             //"definition's case: some group's velocities were taken to one; whether it " &
-            //"collapsed is the `collapse` line's) or max_collisions (the work budget was " &
-            //"spent)"), &
+            //"collapsed is the `collapse` line's), max_collisions (the work budget was " &
+            //"spent) or horizon (t_max reached with collisions still to come)"), &
             entry("precision", "the kind that answered: qp (real(16)) or dp (real(8))"), &
             entry("certified", "precision=auto only: yes where real(8)'s rounding " &
             //"certificate held"), &
@@ -74,8 +76,10 @@ contains
             entry("v<i>", "final velocity of sphere i = 1 ... p [V], down to the decade of " &
             //"its own bound (its rounding included); 3E-02 or 0E-02: a velocity rounded at " &
             //"its bound's decade"), &
-            entry("x<i>", "position of sphere i at t_end [L], every digit of the kind"), &
-            entry("y<i>", "gap i = 1 ... p-1 (between spheres i and i+1) at t_end [L]") &
+            entry("x<i>", "position of sphere i at t_end (or t) [L], every digit of the kind"), &
+            entry("y<i>", "gap i = 1 ... p-1 (between spheres i and i+1) at t_end (or t) [L]; " &
+            //"with a right wall or a ring also gap p (sphere p to the wall, or the ring's " &
+            //"seam to sphere 1)") &
             ]
     end function answer_lines
 
@@ -87,8 +91,10 @@ contains
             entry("event", "the event's number: 0 the start, then one more per collision " &
             //"or collapse limit"), &
             entry("kind", "start, collision or collapse"), &
-            entry("first", "a collision's left sphere i, a collapse's first sphere"), &
-            entry("last", "a collision's right sphere i+1, a collapse's last sphere"), &
+            entry("first", "a collision's left sphere i (0: the left wall), a collapse's " &
+            //"first sphere"), &
+            entry("last", "a collision's right sphere i+1 (p+1: the right wall; 1 across a " &
+            //"ring's seam), a collapse's last sphere"), &
             entry("t[L/V]", "time of the event"), &
             entry("w[V]", "a collision's approach rate: the rate of its gap just before it " &
             //"(negative; 0 for start and collapse)"), &

@@ -210,6 +210,7 @@ contains
         run%message = low%message
         run%n = low%n
         run%t_end = real(low%t_end, qp)
+        run%clock%t = real(low%clock%t, qp)
         run%limits%n = low%limits%n
         run%limits%closed_form = low%limits%closed_form
         run%limits%exact = low%limits%exact

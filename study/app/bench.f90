@@ -31,8 +31,8 @@ program c12_bench
     real :: min_seconds
     integer :: stat, unit
     !> The parts of the table, in its order, and those measured anew.
-    character(len=*), parameter :: part_names(8) = [character(len=12) :: "kinds", &
-        "monte_carlo", "side_by_side", "callgrind", "methods", "loop", "whole", "study"]
+    character(len=*), parameter :: part_names(9) = [character(len=12) :: "kinds", &
+        "monte_carlo", "side_by_side", "callgrind", "methods", "loop", "whole", "study", "ring"]
     logical :: measure(size(part_names))
     !> The rows of the previous OUT/bench.tsv (kept for the parts not measured).
     character(len=4000), allocatable :: previous(:)
@@ -43,7 +43,7 @@ program c12_bench
     call cli%add_real("min_seconds", "0.1", "seconds of repeated runs per timing", &
         lo=0.0_qp, hi=100.0_qp, lo_open=.true., hi_open=.true.)
     call cli%add_word("parts", "all", "the parts measured anew, comma-separated (kinds, " &
-        //"monte_carlo, side_by_side, callgrind, methods, loop, whole, study), or all; the " &
+        //"monte_carlo, side_by_side, callgrind, methods, loop, whole, study, ring), or all; the " &
         //"others' rows kept from OUT/bench.tsv")
     call read_keys(cli)
     out = cli%get_word("out")
@@ -96,6 +96,11 @@ program c12_bench
     else
         call keep(8)
     end if
+    if (measure(9)) then
+        call ring_costs()
+    else
+        call keep(9)
+    end if
     call close_table(unit, stat, msg)
     call stop_unless_written(stat, msg)
 
@@ -117,7 +122,7 @@ contains
             k = findloc(part_names, words(first:last), 1)
             if (k == 0) call fail("c12-bench: parts = "//words//": '"//words(first:last)// &
                 "' is not a part; allowed all or parts among kinds, monte_carlo, " &
-                //"side_by_side, callgrind, methods, loop, whole, study")
+                //"side_by_side, callgrind, methods, loop, whole, study, ring")
             measure(k) = .true.
             first = last + 2
         end do
@@ -164,6 +169,8 @@ contains
             part_of = 7
         else if (starts(row, "study.")) then
             part_of = 8
+        else if (starts(row, "ring.")) then
+            part_of = 9
         end if
     end function part_of
 
@@ -506,6 +513,43 @@ contains
             3)//" ns in cost_vs_loop.tsv): reading, setting up, writing 3 10^6 numbers with " &
             //"every digit; target for the output at most 0.5"
     end subroutine whole_process
+
+    !> The cooling ring of 10^5 rods at e = 0.99, n d = 0.1, T0 = 1 (the gas of
+    !> sphere-row gas=ring, seed 1) to t0 and to 10 t0 (t0 = 801.6 for these,
+    !> Haff's time: docs/scenes.md), as whole processes in turn: sphere-row in
+    !> precision dp against the tight real(8) ring loop, and in qp against the
+    !> real(16) loop, on the same gas to the same time (they take the same
+    !> collisions, 3,540,316 to t0): medians of the times and of the ratios,
+    !> which are the ratios per collision. Targets: dp at most 2, qp at most
+    !> 2.2.
+    subroutine ring_costs()
+        character(len=*), parameter :: gas = " p=100000 e=0.99 density=0.1", &
+            times(2) = [character(len=12) :: "801.6", "8016"], names(2) = &
+            [character(len=3) :: "t0", "t10"]
+        character(len=*), parameter :: kinds(2) = ["dp", "qp"]
+        real(qp), parameter :: targets(2) = [2.0_qp, 2.2_qp]
+        real(qp) :: ta, tb, ratio
+        integer :: i, j
+        write (unit, "(a)") "ring.machine"//tab//cpu_model()//tab//"-"//tab// &
+            "the processor of the rows below, /proc/cpuinfo"
+        do j = 1, size(kinds)
+            do i = 1, size(times)
+                call in_turn(bin//"/sphere-row gas=ring"//gas//" t_max="//trim(times(i))// &
+                    " precision="//kinds(j), bin//"/c12-ring-loop"//gas//" t_max="// &
+                    trim(times(i))//" kind="//kinds(j), ta, tb, ratio)
+                write (unit, "(a)") "ring."//trim(names(i))//"."//kinds(j)//".seconds"//tab// &
+                    real_str(ta, 3)//tab//"s"//tab//"sphere-row gas=ring"//gas//" t_max=" &
+                    //trim(times(i))//" precision="//kinds(j)//", the whole process, median of " &
+                    //itoa(pairs)
+                write (unit, "(a)") "ring."//trim(names(i))//"."//kinds(j)//".loop_seconds"// &
+                    tab//real_str(tb, 3)//tab//"s"//tab//"c12-ring-loop"//gas//" t_max=" &
+                    //trim(times(i))//" kind="//kinds(j)//", in turn with it"
+                write (unit, "(a)") "ring."//trim(names(i))//"."//kinds(j)//".ratio"//tab// &
+                    real_str(ratio, 3)//tab//"1"//tab//"median of the pairs' ratios; target " &
+                    //"at most "//real_str(targets(j), 2)
+            end do
+        end do
+    end subroutine ring_costs
 
     !> The peak memory (the largest resident set) of `command` and of the
     !> loop's `loop_command`, each run once more, as GNU time reports it

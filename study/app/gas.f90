@@ -77,6 +77,9 @@ program c12_gas
         //tab//"engine_per_collision[us]"//tab//"loop_collisions"//tab//"loop[s]", &
         unit_time, stat, msg)
     call stop_unless_normal(stat, msg)
+    call write_answer(unit_answers, "gas.n", itoa(p), "-", "-", "-", "rods on the ring")
+    call write_answer(unit_answers, "gas.density", short_text(density), "-", "-", "-", &
+        "rods per unit length (diameter 1)")
     do j = 1, size(es)
         call one_restitution(es(j))
     end do
@@ -140,7 +143,7 @@ contains
                     real_str(exp(-(1 - e**2)*watch%per_sphere(k)), 8)//tab// &
                     itoa(watch%clusters(k))//tab//itoa(watch%certified(k))//tab// &
                     itoa(watch%tolerance(k))//tab//itoa(watch%bounded(k))//tab// &
-                    loop_text(loop_t(k)/temperature)//tab//loop_text(loop_c(k))
+                    loop_text(loop_t(k)/real(temperature, dp))//tab//loop_text(loop_c(k))
                 if (leaves == 0 .and. abs(watch%temperature(k)/temperature/haff - 1) > noise) &
                     leaves = k
                 if (parts == 0 .and. loop_t(k) > 0 .and. abs(loop_t(k)/ &
