@@ -7,7 +7,7 @@
 module test_scenes
     use, intrinsic :: iso_fortran_env, only: int64
     use sphere_row, only: qp, scene_t, run_t, event_log_t, scene_init, simulate, itoa, str, &
-        event_collision, status_horizon, status_normal, momentum, kinetic_energy, answer_word, &
+        event_collision, event_collapse, status_horizon, status_normal, momentum, kinetic_energy, answer_word, &
         answer_exact, gaps_at_time, velocities_now
     use sphere_row_gas, only: gas_state, gas_uniform
     use testsuite, only: error_t, unittest_t, new_unittest, check, read_text
@@ -32,6 +32,7 @@ contains
             new_unittest("two_strike_three", test_cradle), &
             new_unittest("ring_keeps_momentum_and_energy_ledger", test_ring_ledger), &
             new_unittest("horizon_state_is_the_run_moved_on", test_horizon), &
+            new_unittest("horizon_before_a_collapse_ends", test_horizon_in_collapse), &
             new_unittest("wall_group_at_rest", test_wall_group), &
             new_unittest("gas_state_as_asked", test_gas_state) &
             ]
@@ -272,6 +273,48 @@ contains
             "horizon: the velocities differ a moment later")
     end subroutine test_horizon
 
+    !> A horizon inside a collapse: the definition's row at e = 0.1 collapses
+    !> by a certified cycle whose collisions accumulate at t_c = 6.0543...,
+    !> its limit found at a collision before t_c and taken after a further
+    !> time. With t_max between that collision and t_c the run does not take
+    !> the limit (finitely many collisions come first, and it takes them),
+    !> and the velocities are not yet the group's; with t_max just after t_c,
+    !> the limit is taken and every sphere moves at v0/4.
+    subroutine test_horizon_in_collapse(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(scene_t) :: scene
+        type(run_t) :: whole, before, after
+        type(event_log_t) :: log
+        integer :: stat, k
+        real(qp) :: t_found
+        character(len=200) :: msg
+        call scene_init(scene, stat, msg, p=4, e=0.1_qp)
+        call check(error, stat == status_normal, "horizon in a collapse: "//trim(msg))
+        if (allocated(error)) return
+        call simulate(scene, whole, log)
+        ! (the collision after which the limit was found: the log's row before it)
+        k = findloc(log%kind(1:log%n), event_collapse, 1)
+        call check(error, whole%limits%certified == 1 .and. k > 1, &
+            "horizon in a collapse: the row's limit is not a certified cycle's")
+        if (allocated(error)) return
+        t_found = log%t(k - 1)
+        call check(error, t_found < whole%limits%t, "horizon in a collapse: the limit is not " &
+            //"taken after a further time")
+        if (allocated(error)) return
+        scene%t_max = t_found + (whole%limits%t - t_found)/2
+        call simulate(scene, before)
+        call check(error, before%status == status_horizon .and. before%limits%n == 0 .and. &
+            before%n >= whole%n .and. maxval(before%v) - minval(before%v) > 0.0_qp, &
+            "horizon in a collapse: before t_c, "//itoa(before%limits%n)//" limits, " &
+            //itoa(before%n)//" collisions, spread "//str(maxval(before%v) - minval(before%v)))
+        if (allocated(error)) return
+        scene%t_max = whole%limits%t + 1.0e-6_qp
+        call simulate(scene, after)
+        call check(error, after%limits%certified == 1 .and. all(abs(after%v - 0.25_qp) <= &
+            after%v_bounds), "horizon in a collapse: after t_c, "//itoa(after%limits%n) &
+            //" limits, v1 = "//str(after%v(1)))
+    end subroutine test_horizon_in_collapse
+
     !> Two equal spheres and a wall, e = e_wall = 0.1, below their collapse
     !> threshold: the pair collapses against the wall; the run takes the
     !> limit of both at rest (at tolerance, its bound the group's energy in
@@ -293,6 +336,19 @@ contains
         call check(error, all(run%v == 0.0_qp) .and. run%v_bound < 1.0e-30_qp, &
             "wall group: v = "//str(run%v(1))//", "//str(run%v(2))//", bound " &
             //str(run%v_bound))
+        if (allocated(error)) return
+        ! a group at the wall whose gaps and rates are quiet but which moves
+        ! away from it is not taken to rest: spheres 1 and 2 leave the wall
+        ! together at v0 as a light third is struck plastically (its strike
+        ! changes their rate by 1e-12, below tol = 1e-10)
+        call scene_init(scene, stat, msg, p=3, e=0.0_qp, masses=[1.0_qp, 1.0_qp, 1.0e-3_qp], &
+            velocities=[1.0_qp, 1.0_qp, 1.0_qp - 1.0e-9_qp], gaps=[0.0_qp, 0.0_qp], &
+            wall_left=0.0_qp, tol=1.0e-10_qp)
+        call check(error, stat == status_normal, "wall group: "//trim(msg))
+        if (allocated(error)) return
+        call simulate(scene, run)
+        call check(error, run%n > 0 .and. all(abs(run%v - 1.0_qp) < 1.0e-6_qp), &
+            "wall group: a pair leaving the wall ends at v1 = "//str(run%v(1)))
     end subroutine test_wall_group
 
     !> The random gas is as asked: gaps that fill the free length exactly
@@ -372,6 +428,9 @@ contains
             case ("t_max")
                 allocate (t_max)
                 read (value, *) t_max
+            case default
+                call check(error, .false., keys//": no key "//name)
+                return
             end select
         end do
         call scene_init(scene, stat, msg, p=p, e=e, masses=masses, gaps=gaps, &

@@ -3,6 +3,7 @@
 !> `sphere_row_cli`, and the scene they give, refused where its scales do not
 !> fit in real(16), or, for a run asked in real(8), in real(8).
 module sphere_row_scene_keys
+    use, intrinsic :: iso_fortran_env, only: int64
     use sphere_row_kinds, only: dp, qp
     use sphere_row_format, only: itoa, short_text
     use sphere_row_status, only: status_normal
@@ -258,7 +259,7 @@ contains
         if (.not. allocated(masses)) allocate (masses(p), source=1.0_qp)
         allocate (velocities(p), free(merge(p, p + 1, gas == "ring")))
         call gas_state(p, cli%get_real("d"), masses, cli%get_real("density"), &
-            cli%get_real("temperature"), int(cli%get_int("seed"), kind(1_8)), free, &
+            cli%get_real("temperature"), int(cli%get_int("seed"), int64), free, &
             velocities, ok)
         if (.not. ok) then
             call fatal_error(error, "density = "//printable(cli%get_text("density"))//" with d = " &

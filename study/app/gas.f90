@@ -33,7 +33,7 @@ program c12_gas
         "e: its temperature against Haff's law, per time and per collisions, where it"//nl// &
         "leaves the law, the collapses met and their labels, the late decay, and the same"//nl// &
         "gas with collisions below a cutoff speed elastic (the field's workaround).")
-    call cli%add_int("p", "4000", "rods on the ring", lo=3, hi=1000000)
+    call cli%add_int("p", "1000", "rods on the ring", lo=3, hi=1000000)
     call cli%add_reals("es", "0.99,0.9,0.5", "the restitutions e", lo=0.0_qp, hi=1.0_qp, &
         hi_open=.true.)
     call cli%add_real("density", "0.1", "rods per unit length (n d, d = 1)", lo=0.0_qp, &
@@ -45,8 +45,9 @@ program c12_gas
     call cli%add_real("from", "0.01", "the first sample after t = 0, in units of t0", &
         lo=0.0_qp, lo_open=.true.)
     call cli%add_int("per_decade", "5", "samples a decade of t", lo=1, hi=100)
-    call cli%add_int("max_collisions", "0", "the engine's budget a run (0: its default, " &
-        //"max(10^6, 100 p))", lo=0)
+    call cli%add_int("max_collisions", "10000000", "the engine's budget a run (0: its " &
+        //"default, max(10^6, 100 p); a ring at e = 0.9 spends most of it in its collapses)", &
+        lo=0)
     call cli%add_real("cutoff", "1e-3", "the workaround's cutoff speed over sqrt(T0): a " &
         //"collision slower than it is elastic", lo=0.0_qp)
     call cli%add_int("loop_max", "20000000", "the workaround loop's budget a run", lo=1)
@@ -144,10 +145,12 @@ contains
                     itoa(watch%clusters(k))//tab//itoa(watch%certified(k))//tab// &
                     itoa(watch%tolerance(k))//tab//itoa(watch%bounded(k))//tab// &
                     loop_text(loop_t(k)/real(temperature, dp))//tab//loop_text(loop_c(k))
-                if (leaves == 0 .and. abs(watch%temperature(k)/temperature/haff - 1) > noise) &
+                if (leaves == 0 .and. abs(watch%temperature(k)/temperature/haff - 1) > noise) then
                     leaves = k
-                if (parts == 0 .and. loop_t(k) > 0 .and. abs(loop_t(k)/ &
-                    watch%temperature(k) - 1) > noise) parts = k
+                end if
+                if (parts == 0 .and. loop_t(k) > 0) then
+                    if (abs(loop_t(k)/watch%temperature(k) - 1) > noise) parts = k
+                end if
             end if
         end do
         key = "gas."//trim(short_text(e))//"."
@@ -166,8 +169,9 @@ contains
             "-", "the bound on every velocity at the end")
         call write_answer(unit_answers, key//"noise", real_str(noise, 2), "-", "-", "-", &
             "3 sqrt(2/N): the relative scatter of T of N rods that Haff's law is read within")
-        call write_answer(unit_answers, key//"haff_until", sample_t0(times, t0, leaves - 1), "-", "-", &
-            "-", "the last sample (t/t0) up to which T/T0 keeps within the noise of Haff's " &
+        call write_answer(unit_answers, key//"haff_until", sample_t0(times, t0, leaves - 1), &
+            "-", "-", "-", "the last sample (t/t0) up to which T/T0 keeps within the noise " &
+            //"of Haff's " &
             //"law, from the start")
         call write_answer(unit_answers, key//"haff_ratio_end", real_str(watch%temperature( &
             max(watch%n, 1))/temperature*(1 + watch%t(max(watch%n, 1))/t0)**2, 3), "-", "-", &
@@ -187,8 +191,9 @@ contains
             slope < 1), "-0.667", "-2/3", sample_value(slope + 2.0_qp/3, slope < 1), &
             "d log T/d log t over the last decade of samples (Haff: -2 at t >> t0; the " &
             //"sticky gas: -2/3)")
-        call write_answer(unit_answers, key//"cutoff_parts", sample_t0(times, t0, parts), "-", "-", "-", &
-            "the first sample (t/t0) at which the workaround's T leaves the engine's by " &
+        call write_answer(unit_answers, key//"cutoff_parts", sample_t0(times, t0, parts), "-", &
+            "-", "-", "the first sample (t/t0) at which the workaround's T leaves the " &
+            //"engine's by " &
             //"more than the noise (cutoff "//short_text(cutoff)//"; '-': never)")
         call write_answer(unit_answers, key//"cutoff_collisions", itoa(loop_n), "-", "-", "-", &
             "the workaround's collisions to the horizon or its budget "//itoa(loop_budget))
