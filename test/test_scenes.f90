@@ -7,8 +7,8 @@
 module test_scenes
     use, intrinsic :: iso_fortran_env, only: int64
     use sphere_row, only: qp, scene_t, run_t, event_log_t, scene_init, simulate, itoa, str, &
-        event_collision, event_collapse, status_horizon, status_normal, momentum, kinetic_energy, answer_word, &
-        answer_exact, gaps_at_time, velocities_now
+        event_collision, event_collapse, status_horizon, status_normal, momentum, &
+        kinetic_energy, answer_word, answer_exact, velocities_now
     use sphere_row_gas, only: gas_state, gas_uniform
     use testsuite, only: error_t, unittest_t, new_unittest, check, read_text
     implicit none
