@@ -15,10 +15,13 @@ set xlabel "collisions per rod c"
 set ylabel "temperature T / T0"
 set logscale xy
 set format y "10^{%L}"
+set yrange [1e-3:2]
 set grid
 set key bottom left box opaque
+es = "0.99 0.9 0.5"
+colours = "#1f77b4 #ff7f0e #2ca02c"
 is(e) = (abs(column('e') - e) < 1e-9 && column('collisions_per_sphere') > 0) ? column('collisions_per_sphere') : NaN
-plot for [e in "0.99 0.9 0.5"] f using (is(real(e))):(column('T_over_T0')) with points pt 7 ps 0.7 \
-        title sprintf("e = %s, the engine", e), \
-     for [e in "0.99 0.9 0.5"] f using (is(real(e))):(column('exp_law')) with lines lw 1.5 \
-        title sprintf("exp(-(1 - e^2) c), e = %s", e)
+plot for [i=1:3] f using (is(real(word(es, i)))):(column('T_over_T0')) with points pt 7 ps 0.7 \
+        lc rgb word(colours, i) title sprintf("e = %s, the engine", word(es, i)), \
+     for [i=1:3] f using (is(real(word(es, i)))):(column('exp_law')) with lines lw 1.5 \
+        lc rgb word(colours, i) title sprintf("exp(-(1 - e^2) c), e = %s", word(es, i))

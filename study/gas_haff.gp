@@ -23,11 +23,14 @@ set xrange [0.01:30]
 set grid
 set key bottom left box opaque
 haff(x) = 1/(1 + x)**2
+es = "0.99 0.9 0.5"
+colours = "#1f77b4 #ff7f0e #2ca02c"
 is(e) = (abs(column('e') - e) < 1e-9 && column('t_over_t0') > 0) ? column('t_over_t0') : NaN
 cut(s) = (s eq '-') ? NaN : real(s)
 plot haff(x) with lines lw 2 dt 1 lc rgb '#000000' title "Haff's law T0/(1 + t/t0)^2", \
      0.3*x**(-2.0/3) with lines dt 3 lc rgb '#7f7f7f' title "t^{-2/3} (the sticky gas's slope)", \
-     for [e in "0.99 0.9 0.5"] f using (is(real(e))):(column('T_over_T0')) with linespoints \
-        pt 7 ps 0.6 lw 1.5 title sprintf("e = %s, the engine", e), \
-     for [e in "0.99 0.9 0.5"] f using (is(real(e))):(cut(strcol('cutoff_T_over_T0'))) with lines \
-        dt 2 lw 1 title sprintf("e = %s, collisions below the cutoff elastic", e)
+     for [i=1:3] f using (is(real(word(es, i)))):(column('T_over_T0')) with linespoints \
+        pt 7 ps 0.6 lw 1.5 lc rgb word(colours, i) title sprintf("e = %s, the engine", word(es, i)), \
+     for [i=1:3] f using (is(real(word(es, i)))):(cut(strcol('cutoff_T_over_T0'))) with lines \
+        dt 2 lw 1 lc rgb word(colours, i) \
+        title sprintf("e = %s, collisions below the cutoff elastic", word(es, i))

@@ -101,8 +101,8 @@ contains
         type(gas_watch_t) :: watch
         real(qp), allocatable :: times(:), gaps(:), v(:), m(:)
         real(dp), allocatable :: loop_t(:), loop_c(:)
-        real(qp) :: t0, noise, haff, slope
-        integer :: n_samples, k, loop_n, parts, leaves
+        real(qp) :: t0, noise, slope
+        integer :: n_samples, loop_n, parts, leaves
         integer(int64) :: c0, c1, c2, rate
         real(dp) :: loop_end
         logical :: ok
@@ -131,28 +131,7 @@ contains
         call system_clock(c2)
         ! (T of N rods fluctuates by about sqrt(2/N) of itself: three of it)
         noise = 3*sqrt(2.0_qp/p)
-        leaves = 0
-        parts = 0
-        do k = 1, n_samples
-            haff = 1/(1 + times(k)/t0)**2
-            if (k <= watch%n) then
-                write (unit, "(a)") short_text(e)//tab//short_text(times(k)/t0, 6)//tab// &
-                    real_str(watch%temperature(k)/temperature, 8)//tab// &
-                    real_str(watch%bound(k)/temperature, 2)//tab//real_str(haff, 8)//tab// &
-                    real_str(watch%temperature(k)/temperature/haff, 6)//tab// &
-                    real_str(watch%per_sphere(k), 6)//tab// &
-                    real_str(exp(-(1 - e**2)*watch%per_sphere(k)), 8)//tab// &
-                    itoa(watch%clusters(k))//tab//itoa(watch%certified(k))//tab// &
-                    itoa(watch%tolerance(k))//tab//itoa(watch%bounded(k))//tab// &
-                    loop_text(loop_t(k)/real(temperature, dp))//tab//loop_text(loop_c(k))
-                if (leaves == 0 .and. abs(watch%temperature(k)/temperature/haff - 1) > noise) then
-                    leaves = k
-                end if
-                if (parts == 0 .and. loop_t(k) > 0) then
-                    if (abs(loop_t(k)/watch%temperature(k) - 1) > noise) parts = k
-                end if
-            end if
-        end do
+        call write_samples(e, t0, noise, times, watch, loop_t, loop_c, leaves, parts)
         key = "gas."//trim(short_text(e))//"."
         how = "ring of "//itoa(p)//" rods, n d = "//short_text(density)//", T0 = " &
             //short_text(temperature)//", seed "//itoa(int(seed))
@@ -205,6 +184,38 @@ contains
             //short_text(watch%t(max(watch%n, 1))/t0, 3)//" t0, answer " &
             //answer_word(run%answer)//", "//itoa(run%limits%n)//" limits")
     end subroutine one_restitution
+
+    !> The rows of gas_haff.tsv of the samples the engine reached at
+    !> restitution e, beside the workaround's (loop_t, loop_c: -1 where it did
+    !> not reach them); `leaves`, the first sample at which T/T0 leaves Haff's
+    !> law by more than `noise`, and `parts`, the first at which the
+    !> workaround's T leaves the engine's so (0: none).
+    subroutine write_samples(e, t0, noise, times, watch, loop_t, loop_c, leaves, parts)
+        real(qp), intent(in) :: e, t0, noise, times(:)
+        type(gas_watch_t), intent(in) :: watch
+        real(dp), intent(in) :: loop_t(:), loop_c(:)
+        integer, intent(out) :: leaves, parts
+        real(qp) :: haff, ratio
+        integer :: k
+        leaves = 0
+        parts = 0
+        do k = 1, watch%n
+            haff = 1/(1 + times(k)/t0)**2
+            ratio = watch%temperature(k)/temperature/haff
+            write (unit, "(a)") short_text(e)//tab//short_text(times(k)/t0, 6)//tab// &
+                real_str(watch%temperature(k)/temperature, 8)//tab// &
+                real_str(watch%bound(k)/temperature, 2)//tab//real_str(haff, 8)//tab// &
+                real_str(ratio, 6)//tab//real_str(watch%per_sphere(k), 6)//tab// &
+                real_str(exp(-(1 - e**2)*watch%per_sphere(k)), 8)//tab// &
+                itoa(watch%clusters(k))//tab//itoa(watch%certified(k))//tab// &
+                itoa(watch%tolerance(k))//tab//itoa(watch%bounded(k))//tab// &
+                loop_text(loop_t(k)/real(temperature, dp))//tab//loop_text(loop_c(k))
+            if (leaves == 0 .and. abs(ratio - 1) > noise) leaves = k
+            if (parts == 0 .and. loop_t(k) > 0) then
+                if (abs(loop_t(k)/watch%temperature(k) - 1) > noise) parts = k
+            end if
+        end do
+    end subroutine write_samples
 
     !> t = 0 and the log-spaced sample times from `from` t0 to the horizon.
     subroutine sample_times(t0, times)
