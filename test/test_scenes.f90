@@ -11,6 +11,7 @@ module test_scenes
         kinetic_energy, answer_word, answer_exact, velocities_now
     use sphere_row_gas, only: gas_state, gas_uniform
     use testsuite, only: error_t, unittest_t, new_unittest, check, read_text
+    use test_support, only: scene_of
     implicit none
     private
     public :: collect_scenes
@@ -89,7 +90,7 @@ contains
         integer, allocatable :: engine_seq(:), replay_seq(:)
         real(qp), allocatable :: v(:)
         integer :: stat, i
-        call scene_from_keys(r%keys, scene, error)
+        call scene_of(r%keys, scene, error)
         if (allocated(error)) return
         call simulate(scene, run, log)
         call execute_command_line("python3 tools/replay dps=80 format=tsv sequence="//seq_file &
@@ -379,65 +380,6 @@ contains
         call gas_state(p, 1.0_qp, m, 1.0_qp, 2.0_qp, 7_int64, gaps, v, ok)
         call check(error, .not. ok, "gas: density d = 1 accepted")
     end subroutine test_gas_state
-
-    !> The scene of key=value words (those of the replay table).
-    subroutine scene_from_keys(keys, scene, error)
-        character(len=*), intent(in) :: keys
-        type(scene_t), intent(out) :: scene
-        type(error_t), allocatable, intent(out) :: error
-        real(qp), allocatable :: masses(:), gaps(:), velocities(:), wall_left, wall_right, &
-            e_wall, ring, t_max
-        character(len=:), allocatable :: rest, word, name, value
-        integer :: p, stat, at
-        real(qp) :: e
-        character(len=200) :: msg
-        p = 4
-        e = 0.2_qp
-        rest = keys//" "
-        do while (len_trim(rest) > 0)
-            rest = adjustl(rest)
-            at = index(rest, " ")
-            word = rest(:at - 1)
-            rest = rest(at:)
-            at = index(word, "=")
-            name = word(:at - 1)
-            value = word(at + 1:)
-            select case (name)
-            case ("p")
-                read (value, *) p
-            case ("e")
-                read (value, *) e
-            case ("masses")
-                call read_reals(value, masses)
-            case ("gaps")
-                call read_reals(value, gaps)
-            case ("velocities")
-                call read_reals(value, velocities)
-            case ("wall_left")
-                allocate (wall_left)
-                read (value, *) wall_left
-            case ("wall_right")
-                allocate (wall_right)
-                read (value, *) wall_right
-            case ("e_wall")
-                allocate (e_wall)
-                read (value, *) e_wall
-            case ("ring")
-                allocate (ring)
-                read (value, *) ring
-            case ("t_max")
-                allocate (t_max)
-                read (value, *) t_max
-            case default
-                call check(error, .false., keys//": no key "//name)
-                return
-            end select
-        end do
-        call scene_init(scene, stat, msg, p=p, e=e, masses=masses, gaps=gaps, &
-            velocities=velocities, wall_left=wall_left, wall_right=wall_right, e_wall=e_wall, &
-            ring=ring, t_max=t_max)
-        call check(error, stat == status_normal, keys//": refused: "//trim(msg))
-    end subroutine scene_from_keys
 
     !> The fields of a line split at its tabs.
     subroutine split_tabs(text, fields)

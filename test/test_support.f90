@@ -1,0 +1,56 @@
+!> What the engine's tests share: a scene written as `sphere-row` takes it on
+!> its command line (`p=5 e=0.3 masses=1,2,1,1,1 ...`), read by the CLI's own
+!> registry and parser, so that a test's scene is one line of text and can be
+!> given to the CLI or tools/replay as it stands.
+module test_support
+    use sphere_row, only: scene_t
+    use sphere_row_cli, only: cli_t, string_t
+    use sphere_row_scene_keys, only: add_scene_keys, add_state_keys, scene_from_cli
+    use sphere_row_error, only: input_error_t => error_t
+    use testsuite, only: error_t
+    implicit none
+    private
+    public :: scene_of
+
+contains
+
+    !> The scene of `keys`, key=value words separated by blanks, as
+    !> sphere-row reads them (its defaults for keys not given); a refusal is
+    !> the test's failure, naming the keys and the CLI's message.
+    subroutine scene_of(keys, scene, error)
+        character(len=*), intent(in) :: keys
+        type(scene_t), intent(out) :: scene
+        type(error_t), allocatable, intent(out) :: error
+        type(cli_t) :: cli
+        type(input_error_t), allocatable :: refused
+        cli%name = "sphere-row"
+        call add_scene_keys(cli)
+        call add_state_keys(cli)
+        call cli%parse(words(keys), refused)
+        if (.not. allocated(refused)) call scene_from_cli(cli, scene, refused)
+        if (allocated(refused)) then
+            allocate (error)
+            error%message = "scene "//keys//" refused: "//refused%message
+        end if
+    end subroutine scene_of
+
+    !> The blank-separated words of `text`.
+    pure function words(text) result(list)
+        character(len=*), intent(in) :: text
+        type(string_t), allocatable :: list(:)
+        integer :: i, start
+        allocate (list(0))
+        start = 0
+        do i = 1, len(text) + 1
+            if (i <= len(text)) then
+                if (text(i:i) /= " ") then
+                    if (start == 0) start = i
+                    cycle
+                end if
+            end if
+            if (start > 0) list = [list, string_t(text(start:i - 1))]
+            start = 0
+        end do
+    end function words
+
+end module test_support
