@@ -5,13 +5,28 @@ set output out
 set datafile separator tab
 set datafile columnheaders
 set key top right box opaque
-set title "C12 task a1: distances y_1, y_2, y_3 between the spheres, e = 0.2, d = 1, a = 1, v_0 = 1"
+f = dir.'/a1_paths.tsv'
+# the scene and the precision from the run: e, d and v0 from a1_answers.tsv
+# (a1.e's value and its how), the precision from a1.collisions' how, a as
+# the gaps at t = 0
+answers = dir.'/a1_answers.tsv'
+stats answers using (strcol('key') eq 'a1.e' ? (e = column('value'), how_e = strcol('how'), 0) : NaN) \
+    nooutput
+stats answers using (strcol('key') eq 'a1.collisions' ? (how_n = strcol('how'), 0) : NaN) nooutput
+after(s, tag) = s[strstrt(s, tag) + strlen(tag):]
+upto(s, tag) = s[1:strstrt(s, tag) - 1]
+d = real(upto(after(how_e, 'd = '), ','))
+v0 = real(upto(after(how_e, 'v0 = '), ')'))
+precision = 'real('.upto(after(how_n, ' in real('), ')').')'
+stats f using (column('y1[L]')) every ::0::0 nooutput
+a = STATS_min
+set title sprintf("C12 task a1: distances y_1, y_2, y_3 between the spheres, e = %g, d = %g, a = %g, v_0 = %g (event-driven in %s)", \
+    e, d, a, v0, precision)
 set xlabel "time t [a/v_0]"
 set ylabel "gap y_i [a]"
 set xrange [0:15]
 set yrange [-0.05:*]
 set grid
-f = dir.'/a1_paths.tsv'
 # the paths are piecewise linear: joining the breakpoints draws them exactly
 plot f using (column('t[L/V]')):(column('y1[L]')) with lines lw 2 lc rgb '#1f77b4' title 'y_1 (spheres 1-2)', \
      f using (column('t[L/V]')):(column('y2[L]')) with lines lw 2 lc rgb '#ff7f0e' title 'y_2 (spheres 2-3)', \

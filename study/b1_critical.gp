@@ -11,6 +11,11 @@ stats a using (strcol('key') eq 'b1.exponent' ? column('value') : NaN) nooutput
 k = STATS_max
 stats a using (strcol('key') eq 'b1.prefactor' ? column('value') : NaN) nooutput
 c = STATS_max
+# the runs' tolerance, b1.tol_fine, as written (10^-4000 is no double)
+stats a using (strcol('key') eq 'b1.tol_fine' ? (tol_text = strcol('value'), 0) : NaN) nooutput
+tol_mantissa = real(tol_text[1:strstrt(tol_text, 'E') - 1])
+tol_decade = int(tol_text[strstrt(tol_text, 'E') + 1:])
+tol = (tol_mantissa == 1 ? '' : sprintf('%g ', tol_mantissa)).sprintf('10^{%d}', tol_decade)
 # the fitted points: n >= 200 (min_fit_collisions of c12-b1, where the
 # asymptote holds); the fit is drawn over their range only
 n_fit_min = 200
@@ -27,7 +32,7 @@ set grid
 set samples 400
 set key top right box opaque
 fitted(x) = (x >= fit_lo && x <= fit_hi) ? c*x**k : NaN
-plot f using (column('delta=e-e_crit')):(column('collisions')) with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'n, event-driven real(16), tol = 1e-4000', \
+plot f using (column('delta=e-e_crit')):(column('collisions')) with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'n, event-driven real(16), tol = '.tol, \
      fitted(x) with lines lw 2 lc rgb '#d62728' \
          title sprintf('least-squares fit over 10^{%d} <= e - e_{crit} <= 10^{%d} (n >= %d)', \
                        floor(log10(fit_lo) + 0.5), floor(log10(fit_hi) + 0.5), n_fit_min), \

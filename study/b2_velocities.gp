@@ -7,7 +7,15 @@ set datafile columnheaders
 f = dir.'/b2_velocities.tsv'
 stats dir.'/b1_answers.tsv' using (strcol('key') eq 'b1.e_crit' ? column('value') : NaN) nooutput
 ecrit = STATS_max
-set title "C12 task b2: final velocities against the restitution coefficient (v_0 = 1)"
+# the grid and the precision that answered each point, from b2_answers.tsv
+# (precision = auto: real(8) under its rounding certificate, else real(16))
+answers = dir.'/b2_answers.tsv'
+stats answers using (strcol('key') eq 'b2.grid_points' ? column('value') : NaN) nooutput
+points = int(STATS_max)
+stats answers using (strcol('key') eq 'b2.points_in_real64' ? column('value') : NaN) nooutput
+in_real64 = int(STATS_max)
+set title sprintf("C12 task b2: final velocities against the restitution coefficient (v_0 = 1)\n%d points of e: %d in real(8) under its rounding certificate, %d in real(16)", \
+    points, in_real64, points - in_real64)
 set xlabel "restitution coefficient e"
 set ylabel "final velocity [v_0]"
 set xrange [0:1]

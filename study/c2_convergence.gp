@@ -15,7 +15,24 @@ set output out
 set datafile separator '\t'
 set datafile missing '-'
 data = dir.'/c2_convergence.tsv'
-set title 'C12 task c2: convergence of the Monte Carlo mean of v_4 (prefixes of one stream)'
+# the stream and its precision, from the answers: nmax runs from one seed;
+# precision=auto runs each in real(8) under its rounding certificate and again
+# in real(16) where it fails (escalated_nmax of the whole stream)
+answers = dir.'/c2_answers.tsv'
+precision = ''
+stats answers using ((strcol(1) eq 'c2.precision') ? (precision = strcol(2), 0) : 1/0) nooutput
+stats answers using ((strcol(1) eq 'c2.nmax') ? $2 : 1/0) nooutput
+nmax = int(STATS_max)
+stats answers using ((strcol(1) eq 'c2.seed') ? $2 : 1/0) nooutput
+seed = int(STATS_max)
+stats answers using ((strcol(1) eq 'c2.escalated_nmax') ? $2 : 1/0) nooutput
+escalated = int(STATS_max)
+stream = sprintf('N: prefixes of one stream of %d runs (seed %d)', nmax, seed)
+runs = (precision eq 'auto') ? \
+    sprintf("%s\n%d in real(8) under its rounding certificate, %d again in real(16)", \
+            stream, nmax - escalated, escalated) : (precision eq 'qp') ? \
+    stream.', all in real(16)' : stream.', precision not recorded'
+set title "C12 task c2: convergence of the Monte Carlo mean of v_4\n".runs
 set xlabel 'sample size N [1]'
 set ylabel 'half-width, error of the mean [v_0]'
 set logscale xy

@@ -7,7 +7,17 @@ set output out
 set datafile separator tab
 set datafile columnheaders
 f = dir.'/collapse_by_p.tsv'
-set title "Collapse in general rows: how good the answer is, by row length (random rows, every rule)"
+# the sample, from the run: its size as the rows of every length summed, its
+# seed, lengths and budget as collapse_answers.tsv's how of collapse.exact
+# says them ("random rows (seed S, p = A..B) whose ... within N collisions")
+stats f using (column("scenes")) nooutput
+rows = int(STATS_sum)
+stats dir.'/collapse_answers.tsv' using (strcol('key') eq 'collapse.exact' ? (how = strcol('how'), 0) : NaN) \
+    nooutput
+drawn = how[strstrt(how, '(') + 1:strstrt(how, ')') - 1]
+budget = how[strstrt(how, ' within ') + 8:strstrt(how, ' collisions') - 1]
+set title sprintf("Collapse in general rows: how good the answer is, by row length\n%d random rows (%s), every collapse rule within %s collisions", \
+    rows, drawn, budget) noenhanced
 set xlabel "number of spheres p"
 set ylabel "share of rows"
 set yrange [0:1]

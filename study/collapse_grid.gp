@@ -8,7 +8,8 @@ set datafile separator tab
 set datafile columnheaders
 f = dir.'/collapse_grid.tsv'
 set title "The collapse region of a struck row: answer by row length p and restitution e (default settings)"
-set xlabel "number of spheres p  (each cell: v\_bound in v0 above, collisions below)"
+# noenhanced: the column's name v_bound as written, not v with a subscript b
+set xlabel "number of spheres p  (each cell: v_bound in v0 above, collisions below)" noenhanced
 set ylabel "restitution coefficient e"
 set logscale x
 set format x "10^{%L}"

@@ -12,7 +12,10 @@ set output out
 set datafile separator tab
 set datafile columnheaders
 f = dir.'/cost_vs_loop.tsv'
-set title "Engine against the tight loop (one core, medians of paired rounds)"
+# how many paired rounds each median took, from the table's rounds column
+stats f using (column("rounds")) nooutput
+rounds = (STATS_min == STATS_max) ? sprintf('%d', STATS_min) : sprintf('%d to %d', STATS_min, STATS_max)
+set title sprintf("Engine against the tight loop (one core, medians of %s paired rounds)", rounds)
 set xlabel "number of spheres p"
 set ylabel "wall time per collision [ns]"
 set logscale xy

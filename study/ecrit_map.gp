@@ -9,14 +9,25 @@ set datafile separator tab
 set datafile missing '-'
 m = dir.'/ecrit_map.tsv'
 f = dir.'/ecrit.tsv'
-# per p, read once: the spacing h of the scan from ecrit.tsv (each run is drawn
-# from half a spacing before its first point to half after its last) and e_f,
-# the first point of the first separated run of the scan in ecrit_map.tsv
-# (every digit of the grid, where ecrit.tsv rounds e_finite_min to its width)
-rows = system("awk -F'\t' 'FNR == 1 { next } NR == FNR { if ($2 == \"real16\" && $5 == \"separated\" && !($1 in ef)) ef[$1] = $3; next } { printf \"%s %s %s \", $1, ($1 in ef) ? ef[$1] : \"NaN\", ($17 - $16)/($10 - 1) }' ".m." ".f)
-p0 = real(word(rows, 1))
-ef(p) = real(word(rows, 3*int(p - p0) + 2))
-h(p) = real(word(rows, 3*int(p - p0) + 3))
+# per p, read once, every column by its name in the header: the spacing h of
+# the scan from ecrit.tsv, (window_to - window_from)/(points - 1) (each run is
+# drawn from half a spacing before its first point to half after its last),
+# and e_f, the first point of the first separated run of the real16 scan in
+# ecrit_map.tsv (every digit of the grid, where ecrit.tsv rounds e_finite_min
+# to its width); both kept in arrays indexed by p itself, so that a row
+# missing from the sweep cannot shift the others
+stats f using (column("p")) nooutput
+p_top = int(STATS_max)
+array EF[p_top]
+array H[p_top]
+do for [i = 1:p_top] { EF[i] = NaN; H[i] = NaN }
+stats f using (H[int(column("p"))] = column("points") > 1 ? \
+    (column("window_to[1]") - column("window_from[1]"))/(column("points") - 1) : NaN, 0) nooutput
+stats m using ((strcol("scan") eq "real16" && strcol("outcome") eq "separated" && \
+    EF[int(column("p"))] != EF[int(column("p"))]) ? (EF[int(column("p"))] = column("e_first[1]"), 0) : 0) \
+    nooutput
+ef(p) = (p >= 1 && p <= p_top) ? EF[int(p)] : NaN
+h(p) = (p >= 1 && p <= p_top) ? H[int(p)] : NaN
 x(e, p) = (e - ef(p))/(1 - ef(p))
 from(p) = x(column("e_first[1]") - h(p)/2, p)
 to(p) = x(column("e_last[1]") + h(p)/2, p)
