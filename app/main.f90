@@ -137,6 +137,11 @@ contains
                 //"in .tsv")
             return
         end if
+        if (samples .and. events_to_file .and. samples_word == events_word) then
+            call fatal_error(error, "samples = "//printable(samples_word)//": the file events " &
+                //"writes too; allowed another file")
+            return
+        end if
         if (cli%given("sample_every") .and. .not. samples) then
             call fatal_error(error, "sample_every = "//printable(cli%get_text("sample_every")) &
                 //": allowed only with samples = FILE.tsv")

@@ -128,7 +128,11 @@ contains
             "gas=cube", "gas", &
             "samples="//tsv, "samples", &
             "samples="//tsv//" t_max=1 precision=dp", "samples", &
-            "sample_every=1 t_max=1", "sample_every"], [2, 23])
+            "sample_every=1 t_max=1", "sample_every", &
+            "velocities=1,0,0,0 e_wall=0.5", "e_wall", &
+            "velocities=1,0,0,0 t_max=1e-400 precision=dp", "t_max", &
+            "velocities=1,0,0,0 ring=1e-400 precision=dp", "ring", &
+            "t_max=1 events="//tsv//" samples="//tsv, "samples"], [2, 27])
         integer :: i, status, unit
         logical :: there
         character(len=:), allocatable :: out, err

@@ -130,13 +130,9 @@ contains
         e = defaults%e
         if (find_key(cli, "e") > 0) e = cli%get_real("e")
         v0 = cli%get_real("v0")
-        if (find_key(cli, "velocities") > 0) then
-            call state_from_cli(cli, p, masses, gaps, velocities, x1, wall_left, wall_right, &
-                e_wall, ring, t_max, error)
-            if (allocated(error)) return
-            if (allocated(velocities)) deallocate (v0)
-        end if
-        if (cli%given("masses")) then
+        ! (the masses before any initial state: a gas draws its velocities for
+        ! them; a table gives its own, refused with the key)
+        if (cli%given("masses") .and. .not. spheres_given(cli)) then
             masses = cli%get_reals("masses")
             if (size(masses) /= p) then
                 call fatal_error(error, origin(cli%keys(key_index(cli, "masses")))//"masses = " &
@@ -145,6 +141,12 @@ contains
                     //" values, each > 0")
                 return
             end if
+        end if
+        if (find_key(cli, "velocities") > 0) then
+            call state_from_cli(cli, p, masses, gaps, velocities, x1, wall_left, wall_right, &
+                e_wall, ring, t_max, error)
+            if (allocated(error)) return
+            if (allocated(velocities)) deallocate (v0)
         end if
         if (cli%given("gaps")) then
             gaps = cli%get_reals("gaps")
@@ -176,6 +178,13 @@ contains
         scene%calendar_from = cli%get_int("calendar_from")
         scene%vtol = cli%get_real("vtol")
     end subroutine scene_from_cli
+
+    !> Whether a table of spheres gives the scene (the key known and given).
+    logical function spheres_given(cli)
+        type(cli_t), intent(in) :: cli
+        spheres_given = .false.
+        if (find_key(cli, "spheres") > 0) spheres_given = cli%given("spheres")
+    end function spheres_given
 
     !> The keys of any initial state (add_state_keys), read into the scene's
     !> parts: each left unallocated where its key is not given. A table
@@ -223,6 +232,12 @@ contains
                     //"gas = ring or gas = box")
                 return
             end do
+        end if
+        if (cli%given("e_wall") .and. .not. (cli%given("wall_left") .or. &
+                cli%given("wall_right") .or. gas == "box")) then
+            call fatal_error(error, "e_wall = "//printable(cli%get_text("e_wall")) &
+                //": no wall to take it; allowed with wall_left, wall_right or gas = box")
+            return
         end if
         if (cli%given("ring")) then
             if (cli%given("wall_left")) call both("ring", "wall_left", "a ring has no ends")
@@ -304,10 +319,24 @@ contains
         if (.not. allocated(error)) call check_values("masses", scene%m)
         if (allocated(scene%v) .and. .not. allocated(error)) call check_values("velocities", &
             scene%v)
+        ! (a wall's or the seam's gap and the horizon: 0 or below is no wall,
+        ! ring or horizon, so each given one must be a normal real(8) too)
+        if (key_given("wall_left")) call check_values("wall_left", [scene%wall_left])
+        if (key_given("wall_right")) call check_values("wall_right", [scene%wall_right])
+        if (key_given("ring")) call check_values("ring", [scene%ring])
+        if (key_given("t_max")) call check_values("t_max", [scene%t_max])
         if (allocated(error)) return
         call check_scales(cli, scene%p, scene%d, scene%v0, scene%m, scene%a, &
             real(huge(1.0_dp), qp), "real(8) (precision = dp)", error)
     contains
+        !> Key `name` is one of the registry's, given, and nothing refused yet.
+        logical function key_given(name)
+            character(len=*), intent(in) :: name
+            key_given = .false.
+            if (allocated(error) .or. find_key(cli, name) == 0) return
+            key_given = cli%given(name)
+        end function key_given
+
         !> Each value of key `name` is 0 or a normal real(8).
         subroutine check_values(name, xs)
             character(len=*), intent(in) :: name

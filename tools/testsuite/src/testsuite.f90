@@ -5,7 +5,8 @@
 !> driver's command line may hold `long`: the deep versions of the property
 !> tests, more cases and longer runs (`make test-long`); and `fail-fast`: no
 !> test runs after the first that fails (the mutation check, tools/mutants,
-!> needs only to know whether one does).
+!> needs only to know whether one does); and `suite=NAME`: only that suite's
+!> tests (may be given more than once), to look at one part quickly.
 module testsuite
     use, intrinsic :: iso_fortran_env, only: output_unit, int64
     implicit none
@@ -17,6 +18,9 @@ module testsuite
     logical, protected :: long_tests = .false.
     !> True when the driver was asked to stop at the first failed test.
     logical :: fail_fast = .false.
+    !> The suites asked for (`suite=NAME`, blank-separated, each between
+    !> blanks); empty: every suite.
+    character(len=:), allocatable :: only_suites
 
     !> A failed check: its message.
     type :: error_t
@@ -73,10 +77,13 @@ contains
                 long_tests = .true.
             else if (arg(:n) == "fail-fast") then
                 fail_fast = .true.
+            else if (n > 6 .and. index(arg(:n), "suite=") == 1) then
+                if (.not. allocated(only_suites)) only_suites = " "
+                only_suites = only_suites//arg(7:n)//" "
             else
                 failed = failed + 1
                 write (output_unit, "(a)") "FAIL testsuite: argument "//arg(:n)// &
-                    ": allowed long or fail-fast"
+                    ": allowed long, fail-fast or suite=NAME"
             end if
         end do
     end subroutine read_test_options
@@ -99,6 +106,9 @@ contains
         integer(int64) :: t0, t1, rate
         real :: seconds
         character(len=16) :: time_text
+        if (allocated(only_suites)) then
+            if (index(only_suites, " "//suite//" ") == 0) return
+        end if
         do i = 1, size(tests)
             if (fail_fast .and. failed > 0) return
             call system_clock(t0, rate)
