@@ -64,7 +64,8 @@ contains
         err = read_text(err_file)
     end subroutine run_cli
 
-    !> Each bad input: exit status 2, one stderr line naming the key, no stdout.
+    !> Each bad input: exit status 2, one stderr line holding the text beside it (the key
+    !> it names; for an argument the shell split at blanks, what they did), no stdout.
     subroutine test_bad_input(error)
         type(error_t), allocatable, intent(out) :: error
         character(len=*), parameter :: cases(*, *) = reshape([character(len=24) :: &
@@ -86,7 +87,9 @@ contains
             "gaps=1,-1,1", "gaps", &
             "d=-1", "d", &
             "events=maybe", "events", &
-            "no_such_file.nml", "no_such_file.nml"], [2, 19])
+            "no_such_file.nml", "no_such_file.nml", &
+            "masses=1, 2, 3, 4", "blanks in the list", &
+            "gaps=1 ,2,3", "blanks in the list"], [2, 21])
         integer :: i, status
         character(len=:), allocatable :: out, err
         do i = 1, size(cases, 2)

@@ -375,14 +375,20 @@ contains
     !> Refuse `key = value` written with blanks around `=`: the shell hands
     !> it over as two or three arguments (`e`, `=`, `0.5`), of which the
     !> bare key would be read as a scene file, so the refusal says what the
-    !> blanks did and the one argument meant.
+    !> blanks did and the one argument meant. So too a list written with
+    !> blanks after or before its commas (`masses=1, 2, 3, 4`: `masses=1,`,
+    !> `2,`, `3,`, `4`), which would be refused as an empty value 2.
     subroutine check_split(args, error)
         type(string_t), intent(in) :: args(:)
         type(error_t), allocatable, intent(out) :: error
-        character(len=:), allocatable :: shown, meant
-        integer :: i, n
+        character(len=:), allocatable :: shown, meant, blanks
+        integer :: i, n, last
+        logical :: around, listed
         n = size(args)
         do i = 1, n - 1
+            ! the arguments i..last are the pieces of one; around: split at '='
+            around = .true.
+            last = i + 1
             associate (a => args(i)%s, b => args(i + 1)%s)
                 if (b == "=" .and. len(b) == 1 .and. index(a, "=") == 0 .and. len(a) > 0) then
                     ! key = value (three arguments), or key = at the end
@@ -391,6 +397,7 @@ contains
                     if (i + 2 <= n) then
                         shown = shown//" "//args(i + 2)%s
                         meant = meant//args(i + 2)%s
+                        last = i + 2
                     end if
                 else if (len(a) > 1 .and. index(a, "=") == len(a) .and. index(b, "=") == 0) then
                     ! key= value
@@ -401,12 +408,34 @@ contains
                     ! key =value
                     shown = a//" "//b
                     meant = a//b
+                else if (index(a, "=") > 1) then
+                    ! key=value, whose list may go on in the next arguments
+                    shown = a
+                    meant = a
+                    around = .false.
+                    last = i
                 else
                     cycle
                 end if
             end associate
-            call fatal_error(error, "argument '"//printable(shown)//"': the blanks around " &
-                //"'=' split it into "//itoa(count_words(shown))//" arguments; allowed " &
+            listed = .false.
+            do while (last < n)
+                if (.not. list_goes_on(meant, args(last + 1)%s)) exit
+                shown = shown//" "//args(last + 1)%s
+                meant = meant//args(last + 1)%s
+                last = last + 1
+                listed = .true.
+            end do
+            if (.not. (around .or. listed)) cycle
+            if (around .and. listed) then
+                blanks = "the blanks around '=' and in the list"
+            else if (around) then
+                blanks = "the blanks around '='"
+            else
+                blanks = "the blanks in the list"
+            end if
+            call fatal_error(error, "argument '"//printable(shown)//"': "//blanks &
+                //" split it into "//itoa(count_words(shown))//" arguments; allowed " &
                 //"key=value as one argument: "//printable(meant))
             return
         end do
@@ -419,6 +448,18 @@ contains
                 if (text(j:j) == " ") count_words = count_words + 1
             end do
         end function count_words
+
+        !> `next` is the rest of the list that `text` (key=value) begins: it
+        !> ends in a comma or `next` begins with one, and `next` is an entry
+        !> of a list (it begins as a number or a comma and holds no '=').
+        pure logical function list_goes_on(text, next)
+            character(len=*), intent(in) :: text, next
+            list_goes_on = .false.
+            if (len(next) == 0 .or. len(text) == 0) return
+            if (index(next, "=") > 0 .or. next == "-") return
+            if (scan(next(1:1), "0123456789+-.,") == 0) return
+            list_goes_on = text(len(text):) == "," .or. next(1:1) == ","
+        end function list_goes_on
     end subroutine check_split
 
     !> " (did you mean NAME?)" for the key of `cli` (only those a file may
