@@ -37,7 +37,7 @@ module sphere_row_cli
     use sphere_row_read, only: printable, lower
     use sphere_row_key, only: key_t, new_key, set_range, range_text, read_value, origin, &
         same_text, key_int, key_real, key_reals, key_flag, key_word, key_choice, key_table, &
-        table_suffix
+        key_choices, table_suffix
     use sphere_row_scene_file, only: scene_item_t, read_scene_text, scene_items, join_values, &
         file_origin
     use sphere_row_system, only: text_out_t, launcher_rank
@@ -90,6 +90,8 @@ module sphere_row_cli
         procedure :: add_word => cli_add_word
         !> Register a key taking one word of a fixed set.
         procedure :: add_choice => cli_add_choice
+        !> Register a key taking a list of words of a fixed set.
+        procedure :: add_choices => cli_add_choices
         !> Register a key taking yes, no or the name of a table file.
         procedure :: add_table => cli_add_table
         !> Read arguments into the keys' values.
@@ -220,6 +222,26 @@ contains
         end do
         call append_key(this, key)
     end subroutine cli_add_choice
+
+    !> Register a key taking a comma-separated list of the words `choices`
+    !> (each exactly as written, each at most once), or the word `every`
+    !> alone for all of them; get_word gives the text, `every` or the list.
+    pure subroutine cli_add_choices(this, name, every, choices, help)
+        class(cli_t), intent(inout) :: this
+        character(len=*), intent(in) :: name, every, choices(:), help
+        type(key_t) :: key
+        integer :: i
+        call new_key(key, name, key_choices, every, help)
+        key%every = every
+        key%choices = ","
+        key%allowed = every//", or a comma-separated list of these, each once:"
+        do i = 1, size(choices)
+            key%choices = key%choices//trim(choices(i))//","
+            key%allowed = key%allowed//" "//trim(choices(i))//trim(merge(", ", "  ", &
+                i < size(choices)))
+        end do
+        call append_key(this, key)
+    end subroutine cli_add_choices
 
     !> Register a key taking `yes`, `no` or the name of a file ending in
     !> `.tsv` (a table the program writes there instead of on stdout):
