@@ -15,7 +15,7 @@ program sphere_row_main
         path_missing, path_regular
     use sphere_row_watch, only: watch_t, event_header, sample_header, progress_on_terminal, &
         progress_elsewhere
-    use sphere_row_lines, only: output_help
+    use sphere_row_lines, only: output_help, line_names
     implicit none
     type(cli_t) :: cli
     type(scene_t), target :: scene
@@ -30,6 +30,8 @@ program sphere_row_main
     !> samples' table is written (samples=FILE).
     logical :: events, events_to_file, samples
     character(len=:), allocatable :: precision_word, events_word, samples_word
+    !> The answer's lines asked for (print): ",all," or ",name,name,...,".
+    character(len=:), allocatable :: print_list
     !> Significant digits of the kind that answered: real(16)'s (str's), or
     !> real(8)'s where it answered (precision=dp, or auto in real(8)); no
     !> number is written with more digits than its kind holds.
@@ -48,6 +50,7 @@ program sphere_row_main
     events_to_file = events .and. events_word /= "yes"
     samples_word = cli%get_word("samples")
     samples = samples_word /= "no"
+    print_list = ","//cli%get_word("print")//","
     call choose_precision(error)
     if (allocated(error)) call fail(cli%name, error)
     call start_watch(error)
@@ -99,6 +102,10 @@ contains
         call cli%add_choice("precision", "qp", [character(len=4) :: "qp", "dp", "auto"], &
             "qp: real(16); dp: real(8), for a scene within real(8)'s normal range; auto:" &
             //" real(8) where a rounding certificate holds, else real(16)")
+        call cli%add_choices("print", "all", line_names(), "the lines of the answer to " &
+            //"print, by their names below (v, x, y: every v<i>, x<i>, y<i>), each where it " &
+            //"applies and in the order below (print=v: the velocities alone); all: every " &
+            //"line; the event table is events'")
         cli%epilogue = output_help()
     end subroutine define_keys
 
@@ -355,27 +362,30 @@ contains
     !> velocity, the run's own rounding included), the collapse limits by kind
     !> and whether the collapse is proven, the groups still active if the
     !> budget ran out, and the velocities (each with the digits its bound
-    !> leaves), positions and gaps.
+    !> leaves), positions and gaps; of these, the lines print= asks for.
     subroutine write_run()
         real(qp) :: bound, separation
         integer :: j
         character(len=:), allocatable :: groups
-        call out%put("collisions "//itoa(run%n))
+        if (wanted("collisions")) call out%put("collisions "//itoa(run%n))
         if (precision_word == "dp") precision_digits = precision(1.0_dp) + 1
         if (precision_word == "auto") then
             if (auto%answered == "dp") precision_digits = precision(1.0_dp) + 1
         end if
-        call out%put("t_end "//real_str(run%t_end, precision_digits))
+        if (wanted("t_end")) call out%put("t_end "//real_str(run%t_end, precision_digits))
         ! (with a horizon, the time of the state below: t_max, or the last
         ! event's where the budget ran out first)
-        if (cli%given("t_max")) call out%put("t "//real_str(run%clock%t, precision_digits))
-        call out%put("status "//status_word(run%status))
+        if (cli%given("t_max") .and. wanted("t")) call out%put("t "//real_str(run%clock%t, &
+            precision_digits))
+        if (wanted("status")) call out%put("status "//status_word(run%status))
         if (precision_word == "auto") then
-            call out%put("precision "//auto%answered)
-            call out%put("certified "//trim(merge("yes", "no ", auto%certified)))
-            if (auto%answered /= "dp") call out%put("not_dp "//auto%why_not_dp)
+            if (wanted("precision")) call out%put("precision "//auto%answered)
+            if (wanted("certified")) call out%put("certified "//trim(merge("yes", "no ", &
+                auto%certified)))
+            if (auto%answered /= "dp" .and. wanted("not_dp")) call out%put("not_dp " &
+                //auto%why_not_dp)
         else
-            call out%put("precision "//precision_word)
+            if (wanted("precision")) call out%put("precision "//precision_word)
         end if
         ! (the run's v_bound is its spheres' largest; auto's certificate may
         ! lower some of them)
@@ -386,34 +396,41 @@ contains
                 bound = max(bound, sphere_bound(j))
             end do
         end if
-        call out%put("answer "//answer_word(run%answer))
-        call out%put("v_bound "//real_str(bound, 2))
+        if (wanted("answer")) call out%put("answer "//answer_word(run%answer))
+        if (wanted("v_bound")) call out%put("v_bound "//real_str(bound, 2))
         if (run%limits%n > 0) then
-            call out%put("collapses "//itoa(run%limits%n))
-            call out%put("closed_form_limits "//itoa(run%limits%closed_form))
-            call out%put("limits_exact "//itoa(run%limits%exact))
-            call out%put("limits_certified "//itoa(run%limits%certified))
-            call out%put("limits_tolerance "//itoa(run%limits%tolerance))
-            call out%put("limits_bounded "//itoa(run%limits%bounded))
+            if (wanted("collapses")) call out%put("collapses "//itoa(run%limits%n))
+            if (wanted("closed_form_limits")) call out%put("closed_form_limits " &
+                //itoa(run%limits%closed_form))
+            if (wanted("limits_exact")) call out%put("limits_exact "//itoa(run%limits%exact))
+            if (wanted("limits_certified")) call out%put("limits_certified " &
+                //itoa(run%limits%certified))
+            if (wanted("limits_tolerance")) call out%put("limits_tolerance " &
+                //itoa(run%limits%tolerance))
+            if (wanted("limits_bounded")) call out%put("limits_bounded " &
+                //itoa(run%limits%bounded))
             ! a collapse is proven where every limit is, in exact arithmetic;
             ! else a merged group's exact final rates are only known to lie
             ! within twice the velocities' bound
             if (collapse_proven(run)) then
-                call out%put("collapse proven")
+                if (wanted("collapse")) call out%put("collapse proven")
             else
-                call out%put("collapse unproven")
-                call out%put("separation_not_excluded_below "//real_str(2*bound/scene%v0, 2))
+                if (wanted("collapse")) call out%put("collapse unproven")
+                if (wanted("separation_not_excluded_below")) call out%put( &
+                    "separation_not_excluded_below "//real_str(2*bound/scene%v0, 2))
             end if
-            call out%put("collapse_spheres "//itoa(run%limits%first)//"-" &
-                //itoa(run%limits%last))
-            call out%put("collapse_t "//real_str(run%limits%t, precision_digits))
+            if (wanted("collapse_spheres")) call out%put("collapse_spheres " &
+                //itoa(run%limits%first)//"-"//itoa(run%limits%last))
+            if (wanted("collapse_t")) call out%put("collapse_t "//real_str(run%limits%t, &
+                precision_digits))
         end if
-        if (run%answer == answer_exact .and. run%status == status_normal) then
+        if (run%answer == answer_exact .and. run%status == status_normal .and. &
+            wanted("separation_scale")) then
             separation = maxval(abs(run%dy))/scene%v0
             if (separation < sqrt(epsilon(1.0_qp))) call out%put("separation_scale " &
                 //real_str(separation, 2))
         end if
-        if (run%answer == answer_unresolved) then
+        if (run%answer == answer_unresolved .and. wanted("active")) then
             groups = ""
             do j = 1, size(run%active, 2)
                 groups = groups//" "//itoa(run%active(1, j))//"-"//itoa(run%active(2, j))
@@ -421,10 +438,17 @@ contains
             if (len(groups) == 0) groups = " none"
             call out%put("active"//groups)
         end if
-        call write_velocities()
-        call write_numbered("x", run%x)
-        call write_numbered("y", run%y)
+        if (wanted("v")) call write_velocities()
+        if (wanted("x")) call write_numbered("x", run%x)
+        if (wanted("y")) call write_numbered("y", run%y)
     end subroutine write_run
+
+    !> True if the answer's line `name` (v, x, y: every v<i>, x<i>, y<i>) is
+    !> asked for: print=all, or the name in print's list.
+    logical function wanted(name)
+        character(len=*), intent(in) :: name
+        wanted = print_list == ",all," .or. index(print_list, ","//name//",") > 0
+    end function wanted
 
     !> Lines `v<i> <v_i>`, each with the digits its bound leaves: every digit
     !> of real(16) where it is 0 (no bound known) or not finite, else the

@@ -7,7 +7,7 @@ module sphere_row_lines
     use sphere_row_cli, only: wrapped, help_width
     implicit none
     private
-    public :: line_t, answer_lines, event_columns, output_help
+    public :: line_t, answer_lines, event_columns, output_help, line_names
 
     !> One line of the answer, or one column of the event table.
     type :: line_t
@@ -20,6 +20,8 @@ module sphere_row_lines
 
     !> Column of `--help` where the meaning of a line starts.
     integer, parameter :: what_column = 24
+    !> The longest name of a line (separation_not_excluded_below), and more.
+    integer, parameter :: line_name_length = 40
 
 contains
 
@@ -82,6 +84,24 @@ contains
             //"seam to sphere 1)") &
             ]
     end function answer_lines
+
+    !> The names by which print= asks for the answer's lines, in their order:
+    !> each line's name, `v` for every v<i> (so `x`, `y`).
+    function line_names() result(names)
+        character(len=line_name_length), allocatable :: names(:)
+        type(line_t), allocatable :: lines(:)
+        integer :: i, at
+        lines = answer_lines()
+        allocate (names(size(lines)))
+        do i = 1, size(lines)
+            at = index(lines(i)%name, "<i>")
+            if (at > 0) then
+                names(i) = lines(i)%name(:at - 1)
+            else
+                names(i) = lines(i)%name
+            end if
+        end do
+    end function line_names
 
     !> The columns of the event table: the fixed ones, then y<i> and dy<i>
     !> for i = 1 ... p-1 (the header writes each with its unit).

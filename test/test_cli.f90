@@ -20,6 +20,7 @@ contains
             new_unittest("bad_scene_keys_refused", test_bad_scene_keys), &
             new_unittest("spheres_table_runs", test_spheres_table), &
             new_unittest("definition_scene_output", test_good_output), &
+            new_unittest("print_lines_asked_for", test_print), &
             new_unittest("namelist_file", test_namelist), &
             new_unittest("event_table", test_events), &
             new_unittest("event_table_file", test_events_file), &
@@ -64,10 +65,11 @@ contains
         err = read_text(err_file)
     end subroutine run_cli
 
-    !> Each bad input: exit status 2, one stderr line naming the key, no stdout.
+    !> Each bad input: exit status 2, one stderr line holding the text beside it (the key
+    !> it names; for an argument the shell split at blanks, what they did), no stdout.
     subroutine test_bad_input(error)
         type(error_t), allocatable, intent(out) :: error
-        character(len=*), parameter :: cases(*, *) = reshape([character(len=24) :: &
+        character(len=*), parameter :: cases(*, *) = reshape([character(len=80) :: &
             "foo=1", "foo", &
             "e=abc", "e", &
             "e=nan", "e", &
@@ -86,7 +88,19 @@ contains
             "gaps=1,-1,1", "gaps", &
             "d=-1", "d", &
             "events=maybe", "events", &
-            "no_such_file.nml", "no_such_file.nml"], [2, 19])
+            "no_such_file.nml", "no_such_file.nml", &
+            "masses=1, 2, 3, 4", "blanks in the list", &
+            "gaps=1 ,2,3", "blanks in the list", &
+            "print=w", "print = w: value 1 = w: not one of the names; allowed all, or a", &
+            "print=v,x,V", "print = v,x,V: value 3 = V: not one of the names", &
+            "print=v,v", "print = v,v: value 2 = v: named twice", &
+            "print=v,,x", "print = v,,x: value 2 is empty", &
+            "print=v,", "print = v,: value 2 is empty", &
+            "print=", "print = : value 1 is empty", &
+            "print=all,v", "print = all,v: value 1 = all: not one of the names", &
+            "'print=v<i>'", "print = v<i>: value 1 = v<i>: not one of the names", &
+            "e=2 print=v", "e = 2: allowed 0 <= e <= 1", &
+            "print=w", "each once: collisions, t_end, t, status, precision,"], [2, 31])
         integer :: i, status
         character(len=:), allocatable :: out, err
         do i = 1, size(cases, 2)
@@ -209,6 +223,62 @@ contains
             "velocity and gap lines")
         call check(error, len(err) == 0, "e=0.2 wrote to stderr")
     end subroutine test_good_output
+
+    !> print= prints the answer's lines it names and no other: each run's
+    !> output is the whole answer's lines of those names (v, x, y: v<i>, x<i>,
+    !> y<i>), in the answer's order; with events=yes the table comes first.
+    subroutine test_print(error)
+        type(error_t), allocatable, intent(out) :: error
+        character(len=*), parameter :: cases(*, *) = reshape([character(len=48) :: &
+            "e=0.1", "v", &
+            "e=0.1", "answer,v_bound,v", &
+            "e=0.1", "y,collisions,x", &
+            "e=0.1", "collapse_t,collapse,collapses,limits_certified", &
+            "e=0.2", "collapse_t", &
+            "p=7 e=0.39", "separation_not_excluded_below,collapse_spheres", &
+            "p=5 e=0.2593", "separation_scale,status", &
+            "p=40 e=0.8 max_collisions=2000", "active,v_bound,t_end", &
+            "e=0.5 precision=auto", "precision,certified,v", &
+            "e=0.5 precision=dp", "not_dp,precision,t_end", &
+            "p=3 e=0.5 ring=1 t_max=2", "t,y"], [2, 11])
+        integer :: i, status
+        character(len=:), allocatable :: whole, out, err
+        do i = 1, size(cases, 2)
+            call run_cli(trim(cases(1, i)), status, whole, err)
+            call check(error, status == 0, trim(cases(1, i))//": exit status")
+            if (allocated(error)) return
+            call run_cli(trim(cases(1, i))//" print="//trim(cases(2, i)), status, out, err)
+            call check(error, status == 0 .and. len(err) == 0, trim(cases(1, i))//" print=" &
+                //trim(cases(2, i))//": exit status "//itoa_local(status)//": "//err)
+            if (allocated(error)) return
+            call check(error, out == named_lines(whole, ","//trim(cases(2, i))//","), &
+                trim(cases(1, i))//" print="//trim(cases(2, i))//" printed:"//nl//out)
+            if (allocated(error)) return
+        end do
+        call run_cli("e=1 events=yes print=collisions", status, out, err)
+        call check(error, status == 0 .and. index(out, "event"//tab//"kind") == 1 .and. &
+            count_lines(out) == 3 + 1 + 1 + 1 .and. index(out, nl//"collisions 3"//nl) > 0, &
+            "e=1 events=yes print=collisions: the table, then the one line: "//out)
+    contains
+        !> The lines of `text` whose name (its first word, v<i>, x<i>, y<i>
+        !> read as v, x, y) is in `names` (",name,...,").
+        pure function named_lines(text, names) result(kept)
+            character(len=*), intent(in) :: text, names
+            character(len=:), allocatable :: kept, name
+            integer :: start, finish
+            kept = ""
+            start = 1
+            do while (start <= len(text))
+                finish = start + index(text(start:), nl) - 1
+                if (finish < start) finish = len(text)
+                name = text(start:start + index(text(start:finish), " ") - 2)
+                if (len(name) > 1 .and. scan(name(1:1), "vxy") == 1 .and. &
+                    verify(name(2:), "0123456789") == 0) name = name(1:1)
+                if (index(names, ","//name//",") > 0) kept = kept//text(start:finish)
+                start = finish + 1
+            end do
+        end function named_lines
+    end subroutine test_print
 
     !> A namelist file gives the scene; key=value after it overrides.
     subroutine test_namelist(error)
@@ -382,6 +452,9 @@ contains
             index(out, "max_collisions=") > 0 .and. index(out, "tol=") > 0, "--help: keys")
         call check(error, index(out, "precision=qp") > 0 .and. &
             index(out, "allowed qp, dp or auto") > 0, "--help: the words of precision")
+        call check(error, index(out, "print=all") > 0 .and. index(out, "allowed all, or a " &
+            //"comma-separated list of these, each once: collisions, t_end,") > 0, &
+            "--help: print and the names it takes")
     end subroutine test_help
 
     !> `--version` prints the name and the version fpm.toml states, exit 0,

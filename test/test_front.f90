@@ -187,7 +187,18 @@ contains
             bad("gaps=1,1", 2, "gaps = 1,1: 2 values given; allowed exactly p-1 = 3"), &
             bad("gaps=1,-1,1", 2, "gaps = 1,-1,1: value 2 is -1; allowed"), &
             bad("gaps=1,nan,1", 2, "gaps = 1,nan,1: value 2 = nan: not a number"), &
-            bad("p=3 gaps=1,1,1", 2, "gaps = 1,1,1: 3 values given; allowed exactly p-1 = 2") &
+            bad("p=3 gaps=1,1,1", 2, "gaps = 1,1,1: 3 values given; allowed exactly p-1 = 2"), &
+            bad("masses=1, 2, 3, 4", 2, "argument 'masses=1, 2, 3, 4': the blanks in the list " &
+            //"split it into 4 arguments; allowed key=value as one argument: masses=1,2,3,4"), &
+            bad("velocities=1, -1, .5, 0", 2, "argument 'velocities=1, -1, .5, 0': the blanks in " &
+            //"the list split it into 4 arguments; allowed key=value as one argument: " &
+            //"velocities=1,-1,.5,0"), &
+            bad("gaps=1 ,2,3", 2, "argument 'gaps=1 ,2,3': the blanks in the list split it " &
+            //"into 2 arguments; allowed key=value as one argument: gaps=1,2,3"), &
+            bad("p=4 masses = 1, 2, 3, 4 e=0.5", 2, "argument 'masses = 1, 2, 3, 4': the blanks " &
+            //"around '=' and in the list split it into 6 arguments; allowed key=value as one " &
+            //"argument: masses=1,2,3,4"), &
+            bad("masses=1, x,1,1", 2, "masses = 1,: value 2 is empty") &
             ]
     end function bad_lists
 

@@ -4,7 +4,8 @@ check its contract on every one of them.
 
 The contract: an input is either answered, exit status 0 with well-formed
 output on stdout (`key value` lines whose numbers are finite, with the event
-table as TSV when asked for) and on stderr nothing but progress lines and
+table as TSV when asked for; with print=, the lines it names and no other)
+and on stderr nothing but progress lines and
 notes (`sphere-row: progress: ...`, `sphere-row: note (the run goes on):
 ...`, each one line of plain ASCII), or refused, exit status 2
 with nothing on stdout and exactly one line of plain ASCII on stderr that
@@ -49,7 +50,12 @@ SCENE_KEYS = ["p", "e", "d", "a", "gaps", "v0", "masses", "tol", "max_collisions
 # horizon (a table of spheres comes as a file: make_case)
 STATE_KEYS = ["velocities", "wall_left", "wall_right", "e_wall", "ring", "gas", "density",
               "temperature", "seed", "t_max"]
-KEYS = SCENE_KEYS + STATE_KEYS + ["events", "precision"]
+KEYS = SCENE_KEYS + STATE_KEYS + ["events", "precision", "print"]
+# the names print= takes: the answer's lines (v, x, y: every v<i>, x<i>, y<i>)
+LINE_NAMES = ["collisions", "t_end", "t", "status", "precision", "certified", "not_dp", "answer",
+              "v_bound", "collapses", "closed_form_limits", "limits_exact", "limits_certified",
+              "limits_tolerance", "limits_bounded", "collapse", "separation_not_excluded_below",
+              "collapse_spheres", "collapse_t", "separation_scale", "active", "v", "x", "y"]
 
 # numbers at the edges: of real(16) (huge, tiny, subnormal), of real(8),
 # of each key's range, written with more digits than real(16) holds
@@ -121,6 +127,10 @@ def small_value(rng, key):
         return str(rng.randint(0, 2 ** 31 - 1))
     if key == "t_max":
         return rng.choice(["0.1", "1", "10", "%.4g" % rng.uniform(0.01, 30)])
+    if key == "print":
+        if rng.random() < 0.2:
+            return "all"
+        return ",".join(rng.sample(LINE_NAMES, rng.randint(1, 4)))
     return rng.choice(["qp", "dp", "auto"])
 
 
@@ -136,6 +146,11 @@ def value(rng, key, p):
         return ",".join(number(rng) if rng.random() < 0.3 else "1" for _ in range(n))
     if key in ("events", "precision", "gas"):
         return rng.choice(WORDS) if roll < 0.4 else small_value(rng, key)
+    if key == "print":
+        # names twice, empty, in another case, beside all, or not names at all
+        return rng.choice(WORDS + ["v,v", "v,,x", "v,", ",v", "V", "all,v", "v<i>", "v1",
+                                   "print", "vx", " v", "v "]) if roll < 0.4 \
+            else small_value(rng, key)
     if roll < 0.5:
         return small_value(rng, key)
     if key in ("p", "max_collisions", "calendar_from"):
@@ -291,12 +306,15 @@ LINE = re.compile(rb"^[a-z_]+[0-9]* \S.*$")
 ALLOWED_STDERR = re.compile(rb"^sphere-row: (progress|note \(the run goes on\)): [ -~]*$")
 
 
-def check_output(out, err, events):
-    """What breaks the contract in an answered run's output, or None."""
+def check_output(out, err, events, printed=None):
+    """What breaks the contract in an answered run's output, or None;
+    `printed`: the names print= asked for (None: every line)."""
     if err and (not err.endswith(b"\n") or
                 not all(ALLOWED_STDERR.match(line) for line in err.split(b"\n")[:-1])):
         return "exit 0 with stderr other than progress lines and notes: %r" % err[:200]
-    if not out.endswith(b"\n"):
+    asked = (lambda name: True) if printed is None else (
+        lambda name: re.sub(rb"^([vxy])\d+$", rb"\1", name).decode() in printed)
+    if not out.endswith(b"\n") and not (printed is not None and out == b"" and not events):
         return "output does not end with a line end"
     if b"***" in out or re.search(rb"(?i)\b-?(nan|inf)\b", out):
         return "nan, inf or *** in the output"
@@ -316,6 +334,8 @@ def check_output(out, err, events):
         if not LINE.match(line):
             return "malformed line: %r" % line[:200]
         key, val = line.split(b" ", 1)
+        if not asked(key):
+            return "a line print= did not ask for: %r" % line[:200]
         keys.add(key)
         values[key] = val
         if re.match(rb"^(t_end|collapse_t|[xy]\d+)$", key) and not NUMBER.match(val):
@@ -326,17 +346,18 @@ def check_output(out, err, events):
             return "v_bound not a number: %r" % line[:200]
     for need in (b"collisions", b"t_end", b"status", b"precision", b"answer", b"v_bound",
                  b"v1", b"x1", b"y1"):
-        if need not in keys:
+        if need not in keys and asked(need):
             return "no line %s" % need.decode()
     if events and not table:
         return "events=yes without the event table"
     # a label is a proof: limits say whether the collapse is proven, an
     # unproven one how far the claim reaches, and a certified answer with
     # limits proves the collapse
-    if b"collapses" in keys:
+    if b"collapses" in keys and asked(b"collapse"):
         if values.get(b"collapse") not in (b"proven", b"unproven"):
             return "collapse limits without a `collapse proven|unproven` line"
-        if values[b"collapse"] == b"unproven" and b"separation_not_excluded_below" not in keys:
+        if values[b"collapse"] == b"unproven" and b"separation_not_excluded_below" not in keys \
+                and asked(b"separation_not_excluded_below"):
             return "collapse unproven without separation_not_excluded_below"
         if values.get(b"answer") in (b"exact", b"certified") and values[b"collapse"] != b"proven":
             return "answer %s with collapse unproven" % values[b"answer"].decode()
@@ -422,7 +443,9 @@ def run_case(binary, workdir, index, case, timeout):
             return "help", breach, described
         events = any(a == b"events=yes" for a in args) or (
             case.file_bytes is not None and b"events" in case.file_bytes)
-        return "answered", check_output(done.stdout, done.stderr, events), described
+        printed = [a[len(b"print="):].decode() for a in args if a.startswith(b"print=")]
+        printed = None if not printed or printed[-1] == "all" else printed[-1].split(",")
+        return "answered", check_output(done.stdout, done.stderr, events, printed), described
     if done.returncode == 2:
         return "refused", check_refusal(done.stdout, done.stderr), described
     return "status", "exit status %d: %r" % (done.returncode, done.stderr[:300]), described

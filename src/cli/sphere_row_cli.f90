@@ -37,7 +37,7 @@ module sphere_row_cli
     use sphere_row_read, only: printable, lower
     use sphere_row_key, only: key_t, new_key, set_range, range_text, read_value, origin, &
         same_text, key_int, key_real, key_reals, key_flag, key_word, key_choice, key_table, &
-        table_suffix
+        key_choices, table_suffix
     use sphere_row_scene_file, only: scene_item_t, read_scene_text, scene_items, join_values, &
         file_origin
     use sphere_row_system, only: text_out_t, launcher_rank
@@ -90,6 +90,8 @@ module sphere_row_cli
         procedure :: add_word => cli_add_word
         !> Register a key taking one word of a fixed set.
         procedure :: add_choice => cli_add_choice
+        !> Register a key taking a list of words of a fixed set.
+        procedure :: add_choices => cli_add_choices
         !> Register a key taking yes, no or the name of a table file.
         procedure :: add_table => cli_add_table
         !> Read arguments into the keys' values.
@@ -220,6 +222,26 @@ contains
         end do
         call append_key(this, key)
     end subroutine cli_add_choice
+
+    !> Register a key taking a comma-separated list of the words `choices`
+    !> (each exactly as written, each at most once), or the word `every`
+    !> alone for all of them; get_word gives the text, `every` or the list.
+    pure subroutine cli_add_choices(this, name, every, choices, help)
+        class(cli_t), intent(inout) :: this
+        character(len=*), intent(in) :: name, every, choices(:), help
+        type(key_t) :: key
+        integer :: i
+        call new_key(key, name, key_choices, every, help)
+        key%every = every
+        key%choices = ","
+        key%allowed = every//", or a comma-separated list of these, each once:"
+        do i = 1, size(choices)
+            key%choices = key%choices//trim(choices(i))//","
+            key%allowed = key%allowed//" "//trim(choices(i))//trim(merge(", ", "  ", &
+                i < size(choices)))
+        end do
+        call append_key(this, key)
+    end subroutine cli_add_choices
 
     !> Register a key taking `yes`, `no` or the name of a file ending in
     !> `.tsv` (a table the program writes there instead of on stdout):
@@ -375,14 +397,20 @@ contains
     !> Refuse `key = value` written with blanks around `=`: the shell hands
     !> it over as two or three arguments (`e`, `=`, `0.5`), of which the
     !> bare key would be read as a scene file, so the refusal says what the
-    !> blanks did and the one argument meant.
+    !> blanks did and the one argument meant. So too a list written with
+    !> blanks after or before its commas (`masses=1, 2, 3, 4`: `masses=1,`,
+    !> `2,`, `3,`, `4`), which would be refused as an empty value 2.
     subroutine check_split(args, error)
         type(string_t), intent(in) :: args(:)
         type(error_t), allocatable, intent(out) :: error
-        character(len=:), allocatable :: shown, meant
-        integer :: i, n
+        character(len=:), allocatable :: shown, meant, blanks
+        integer :: i, n, last
+        logical :: around, listed
         n = size(args)
         do i = 1, n - 1
+            ! the arguments i..last are the pieces of one; around: split at '='
+            around = .true.
+            last = i + 1
             associate (a => args(i)%s, b => args(i + 1)%s)
                 if (b == "=" .and. len(b) == 1 .and. index(a, "=") == 0 .and. len(a) > 0) then
                     ! key = value (three arguments), or key = at the end
@@ -391,6 +419,7 @@ contains
                     if (i + 2 <= n) then
                         shown = shown//" "//args(i + 2)%s
                         meant = meant//args(i + 2)%s
+                        last = i + 2
                     end if
                 else if (len(a) > 1 .and. index(a, "=") == len(a) .and. index(b, "=") == 0) then
                     ! key= value
@@ -401,12 +430,34 @@ contains
                     ! key =value
                     shown = a//" "//b
                     meant = a//b
+                else if (index(a, "=") > 1) then
+                    ! key=value, whose list may go on in the next arguments
+                    shown = a
+                    meant = a
+                    around = .false.
+                    last = i
                 else
                     cycle
                 end if
             end associate
-            call fatal_error(error, "argument '"//printable(shown)//"': the blanks around " &
-                //"'=' split it into "//itoa(count_words(shown))//" arguments; allowed " &
+            listed = .false.
+            do while (last < n)
+                if (.not. list_goes_on(meant, args(last + 1)%s)) exit
+                shown = shown//" "//args(last + 1)%s
+                meant = meant//args(last + 1)%s
+                last = last + 1
+                listed = .true.
+            end do
+            if (.not. (around .or. listed)) cycle
+            if (around .and. listed) then
+                blanks = "the blanks around '=' and in the list"
+            else if (around) then
+                blanks = "the blanks around '='"
+            else
+                blanks = "the blanks in the list"
+            end if
+            call fatal_error(error, "argument '"//printable(shown)//"': "//blanks &
+                //" split it into "//itoa(count_words(shown))//" arguments; allowed " &
                 //"key=value as one argument: "//printable(meant))
             return
         end do
@@ -419,6 +470,18 @@ contains
                 if (text(j:j) == " ") count_words = count_words + 1
             end do
         end function count_words
+
+        !> `next` is the rest of the list that `text` (key=value) begins: it
+        !> ends in a comma or `next` begins with one, and `next` is an entry
+        !> of a list (it begins as a number or a comma and holds no '=').
+        pure logical function list_goes_on(text, next)
+            character(len=*), intent(in) :: text, next
+            list_goes_on = .false.
+            if (len(next) == 0 .or. len(text) == 0) return
+            if (index(next, "=") > 0 .or. next == "-") return
+            if (scan(next(1:1), "0123456789+-.,") == 0) return
+            list_goes_on = text(len(text):) == "," .or. next(1:1) == ","
+        end function list_goes_on
     end subroutine check_split
 
     !> " (did you mean NAME?)" for the key of `cli` (only those a file may

@@ -98,7 +98,8 @@ contains
             //nl//"0 or of magnitude between the smallest and the largest normal real(16)" &
             //nl//"(3.3621e-4932 and 1.1897e4932); a range is decided on the number as" &
             //" written;" &
-            //nl//"integers: an optional sign and digits; lists: comma-separated numbers." &
+            //nl//"integers: an optional sign and digits; lists: comma-separated numbers, no" &
+            //" blank." &
             //nl//"Bad input: one line on stderr ("//program//": key = value: allowed ...)," &
             //nl//"exit status 2, nothing on stdout; output that cannot be written: one line" &
             //nl//"on stderr, exit status 1."

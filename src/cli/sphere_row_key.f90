@@ -1,6 +1,6 @@
 !> One key of a program's command line: what it takes (an integer, a real, a
-!> list of reals, yes or no, one word of a fixed set, any word, yes or no or
-!> the name of a table file), its allowed
+!> list of reals, yes or no, one word of a fixed set, a list of words of a
+!> fixed set, any word, yes or no or the name of a table file), its allowed
 !> range, and its value read from the text as given and checked.
 !>
 !> A range is decided on the number as written, not on its rounding to
@@ -16,13 +16,15 @@ module sphere_row_key
     implicit none
     private
     public :: key_t, new_key, set_range, range_text, read_value, origin, same_text
-    public :: key_int, key_real, key_reals, key_flag, key_word, key_choice, key_table
+    public :: key_int, key_real, key_reals, key_flag, key_word, key_choice, key_table, &
+        key_choices
     public :: table_suffix
 
     !> Kinds of value a key takes (key_table: yes, no, or the name of a file
-    !> ending in table_suffix).
+    !> ending in table_suffix; key_choices: a comma-separated list of words
+    !> of a fixed set, each once, or one word that names them all).
     integer, parameter :: key_int = 1, key_real = 2, key_reals = 3, key_flag = 4, key_word = 5, &
-        key_choice = 6, key_table = 7
+        key_choice = 6, key_table = 7, key_choices = 8
 
     !> How the name of a table file given to a key_table ends: a word
     !> mistyped (`Yes`) is refused rather than taken for a file name.
@@ -32,7 +34,8 @@ module sphere_row_key
     type :: key_t
         !> The key as typed before `=`.
         character(len=:), allocatable :: name
-        !> key_int, key_real, key_reals, key_flag, key_word, key_choice or key_table.
+        !> key_int, key_real, key_reals, key_flag, key_word, key_choice, key_table
+        !> or key_choices.
         integer :: kind = key_real
         !> Text read as the value when the key is not given ("" : no value).
         character(len=:), allocatable :: default
@@ -44,8 +47,11 @@ module sphere_row_key
         character(len=:), allocatable :: help
         !> A key that this one overrides: giving both is refused ("" : none).
         character(len=:), allocatable :: overrides
-        !> The words a key_choice takes, each between commas: ",qp,dp,auto,".
+        !> The words a key_choice takes, each between commas: ",qp,dp,auto,"
+        !> (a key_choices: the words of its list).
         character(len=:), allocatable :: choices
+        !> The word that names every word of a key_choices' set ("": none).
+        character(len=:), allocatable :: every
         !> True if a scene file may set the key.
         logical :: in_file = .false.
         !> Range of a number (of every entry of a list): lo <= x <= hi, with
@@ -84,6 +90,7 @@ contains
         key%help = help
         key%overrides = ""
         key%choices = ""
+        key%every = ""
         key%source = ""
         key%text = ""
         if (present(in_file)) key%in_file = in_file
@@ -167,6 +174,8 @@ contains
             if (index(key%text, ",") > 0 .or. index(key%choices, ","//key%text//",") == 0) then
                 call refuse(key, "", error)
             end if
+        case (key_choices)
+            call check_choices(key, error)
         case (key_table)
             key%flag = same_text(key%text, "yes")
             if (key%flag .or. same_text(key%text, "no")) return
@@ -180,6 +189,41 @@ contains
         end select
         if (allocated(error)) error%message = where//error%message
     end subroutine read_value
+
+    !> A key_choices' list: its `every` word alone, or words of its set
+    !> separated by commas, none empty, none twice (the refusal names the
+    !> first entry at fault by its place).
+    pure subroutine check_choices(key, error)
+        type(key_t), intent(in) :: key
+        type(error_t), allocatable, intent(out) :: error
+        character(len=:), allocatable :: item, seen
+        integer :: j, start, finish
+        if (len(key%every) > 0 .and. same_text(key%text, key%every)) return
+        seen = ","
+        start = 1
+        j = 0
+        do while (start <= len(key%text) + 1)
+            j = j + 1
+            finish = index(key%text(start:), ",")
+            if (finish == 0) then
+                finish = len(key%text) + 1
+            else
+                finish = start + finish - 1
+            end if
+            item = key%text(start:finish - 1)
+            if (len(item) == 0) then
+                call refuse(key, "value "//itoa(j)//" is empty; ", error)
+            else if (index(key%choices, ","//item//",") == 0) then
+                call refuse(key, "value "//itoa(j)//" = "//printable(item)//": not one of " &
+                    //"the names; ", error)
+            else if (index(seen, ","//item//",") > 0) then
+                call refuse(key, "value "//itoa(j)//" = "//item//": named twice; ", error)
+            end if
+            if (allocated(error)) return
+            seen = seen//item//","
+            start = finish + 1
+        end do
+    end subroutine check_choices
 
     !> A word: printable text, no blank at either end.
     pure logical function is_word(text)
