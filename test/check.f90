@@ -12,6 +12,7 @@ program check
     use test_replays, only: collect_replays
     use test_labels, only: collect_labels
     use test_scenes, only: collect_scenes
+    use test_proofs, only: collect_proofs
     implicit none
     integer :: passed, failed
     passed = 0
@@ -24,6 +25,7 @@ program check
     call run_tests("replays", collect_replays(), passed, failed)
     call run_tests("labels", collect_labels(), passed, failed)
     call run_tests("scenes", collect_scenes(), passed, failed)
+    call run_tests("proofs", collect_proofs(), passed, failed)
     call run_tests("auto", collect_auto(), passed, failed)
     call run_tests("front", collect_front(), passed, failed)
     call run_tests("cli", collect_cli(), passed, failed)

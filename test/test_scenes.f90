@@ -11,7 +11,7 @@ module test_scenes
         kinetic_energy, answer_word, answer_exact, velocities_now
     use sphere_row_gas, only: gas_state, gas_uniform
     use testsuite, only: error_t, unittest_t, new_unittest, check, read_text
-    use test_support, only: scene_of
+    use test_support, only: scene_of, split_tabs, read_reals
     implicit none
     private
     public :: collect_scenes
@@ -431,35 +431,6 @@ contains
         call check(error, run%answer == answer_exact .and. run%v_bound < 1.0e-30_qp, &
             "a horizon clear of the collision: answer "//answer_word(run%answer))
     end subroutine test_horizon_doubt
-
-    !> The fields of a line split at its tabs.
-    subroutine split_tabs(text, fields)
-        character(len=*), intent(in) :: text
-        character(len=:), allocatable, intent(out) :: fields(:)
-        integer :: n, i, at, from
-        n = count([(text(i:i) == achar(9), i=1, len(text))]) + 1
-        allocate (character(len=len(text)) :: fields(n))
-        from = 1
-        do i = 1, n
-            at = index(text(from:), achar(9))
-            if (at == 0) then
-                fields(i) = text(from:)
-            else
-                fields(i) = text(from:from + at - 2)
-                from = from + at
-            end if
-        end do
-    end subroutine split_tabs
-
-    !> Comma-separated reals.
-    subroutine read_reals(text, xs)
-        character(len=*), intent(in) :: text
-        real(qp), allocatable, intent(out) :: xs(:)
-        integer :: n, i
-        n = count([(text(i:i) == ",", i=1, len_trim(text))]) + 1
-        allocate (xs(n))
-        read (text, *) xs
-    end subroutine read_reals
 
     !> The integers of a file, one a line.
     subroutine read_ints(path, ks)

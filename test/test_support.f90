@@ -1,16 +1,17 @@
 !> What the engine's tests share: a scene written as `sphere-row` takes it on
 !> its command line (`p=5 e=0.3 masses=1,2,1,1,1 ...`), read by the CLI's own
 !> registry and parser, so that a test's scene is one line of text and can be
-!> given to the CLI or tools/replay as it stands.
+!> given to the CLI or tools/replay as it stands; and the readers of
+!> tools/replay's table line.
 module test_support
-    use sphere_row, only: scene_t
+    use sphere_row, only: qp, scene_t
     use sphere_row_cli, only: cli_t, string_t
     use sphere_row_scene_keys, only: add_scene_keys, add_state_keys, scene_from_cli
     use sphere_row_error, only: input_error_t => error_t
     use testsuite, only: error_t
     implicit none
     private
-    public :: scene_of
+    public :: scene_of, split_tabs, read_reals
 
 contains
 
@@ -52,5 +53,34 @@ contains
             start = 0
         end do
     end function words
+
+    !> The fields of a line split at its tabs.
+    subroutine split_tabs(text, fields)
+        character(len=*), intent(in) :: text
+        character(len=:), allocatable, intent(out) :: fields(:)
+        integer :: n, i, at, from
+        n = count([(text(i:i) == achar(9), i=1, len(text))]) + 1
+        allocate (character(len=len(text)) :: fields(n))
+        from = 1
+        do i = 1, n
+            at = index(text(from:), achar(9))
+            if (at == 0) then
+                fields(i) = text(from:)
+            else
+                fields(i) = text(from:from + at - 2)
+                from = from + at
+            end if
+        end do
+    end subroutine split_tabs
+
+    !> Comma-separated reals.
+    subroutine read_reals(text, xs)
+        character(len=*), intent(in) :: text
+        real(qp), allocatable, intent(out) :: xs(:)
+        integer :: n, i
+        n = count([(text(i:i) == ",", i=1, len_trim(text))]) + 1
+        allocate (xs(n))
+        read (text, *) xs
+    end subroutine read_reals
 
 end module test_support
