@@ -62,22 +62,13 @@ contains
             ]
     end function collect_front
 
-    pure function bad(args, status, expect) result(row)
-        character(len=*), intent(in) :: args, expect
-        integer, intent(in) :: status
-        type(bad_case_t) :: row
-        row%args = args
-        row%status = status
-        row%expect = expect
-    end function bad
-
     !> Every malformed input the front door must refuse: the rows of
     !> test/malformed_inputs.tsv (read_bad_rows), and one row too long to write
     !> there.
     function malformed_inputs() result(rows)
         type(bad_case_t), allocatable :: rows(:)
         rows = [read_bad_rows(bad_table), &
-            bad("e="//repeat("7x", 600), 2, "e = "//repeat("7x", 600)//": not a number")]
+            bad_case_t("e="//repeat("7x", 600), 2, "e = "//repeat("7x", 600)//": not a number")]
     end function malformed_inputs
 
     !> The rows of a table of malformed inputs: a header row, then one row a
@@ -99,7 +90,7 @@ contains
         text = read_text(file)
         last = index(text, new_line("a")) - 1
         if (last < 0 .or. text(:max(last, 0)) /= header) then
-            rows = [bad(file//": no header row '"//header//"'", -1, "")]
+            rows = [bad_case_t(file//": no header row '"//header//"'", -1, "")]
             return
         end if
         allocate (rows(count_lines(text) - 1))
