@@ -19,6 +19,7 @@ module test_front
     use sphere_row_error, only: input_error_t => error_t
     use testsuite, only: error_t, unittest_t, new_unittest, check, read_text, count_lines
     use test_cli, only: program_path
+    use test_support, only: words
     implicit none
     private
     public :: collect_front, malformed_inputs, bad_case_t
@@ -154,22 +155,10 @@ contains
     function decode(row) result(args)
         character(len=*), intent(in) :: row
         type(string_t), allocatable :: args(:)
-        integer :: start, i, n
-        n = 1
-        do i = 1, len(row)
-            if (row(i:i) == " ") n = n + 1
-        end do
-        allocate (args(n))
-        start = 1
+        integer :: n
+        args = words(row)
         do n = 1, size(args)
-            i = index(row(start:), " ")
-            if (i == 0) then
-                i = len(row) + 1
-            else
-                i = start + i - 1
-            end if
-            args(n)%s = unescape(row(start:i - 1))
-            start = i + 1
+            args(n)%s = unescape(args(n)%s)
         end do
     end function decode
 

@@ -10,7 +10,7 @@ module test_support
     use testsuite, only: error_t
     implicit none
     private
-    public :: scene_of, random_row
+    public :: scene_of, random_row, words
 
 contains
 
@@ -54,7 +54,7 @@ contains
             gaps=merge(0.0_qp, 2*u(23:p + 21), u(23:p + 21) < closed), max_collisions=cap)
     end subroutine random_row
 
-    !> The blank-separated words of `text`.
+    !> The blank-separated words of `text` (runs of blanks separate as one).
     pure function words(text) result(list)
         character(len=*), intent(in) :: text
         type(string_t), allocatable :: list(:)
