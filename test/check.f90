@@ -1,7 +1,7 @@
 !> Test driver of the engine and the CLI: runs every suite and ends with
 !> `N passed, N failed`.
 program check
-    use testsuite, only: run_tests, read_test_options
+    use testsuite, only: new_suite, run_suites
     use test_engine, only: collect_engine
     use test_collapse, only: collect_collapse
     use test_calendar, only: collect_calendar
@@ -14,21 +14,16 @@ program check
     use test_scenes, only: collect_scenes
     use test_proofs, only: collect_proofs
     implicit none
-    integer :: passed, failed
-    passed = 0
-    failed = 0
-    call read_test_options(failed)
-    call run_tests("engine", collect_engine(), passed, failed)
-    call run_tests("collapse", collect_collapse(), passed, failed)
-    call run_tests("calendar", collect_calendar(), passed, failed)
-    call run_tests("limits", collect_limits(), passed, failed)
-    call run_tests("replays", collect_replays(), passed, failed)
-    call run_tests("labels", collect_labels(), passed, failed)
-    call run_tests("scenes", collect_scenes(), passed, failed)
-    call run_tests("proofs", collect_proofs(), passed, failed)
-    call run_tests("auto", collect_auto(), passed, failed)
-    call run_tests("front", collect_front(), passed, failed)
-    call run_tests("cli", collect_cli(), passed, failed)
-    print "(i0, ' passed, ', i0, ' failed')", passed, failed
-    if (failed > 0) stop 1, quiet=.true.
+    call run_suites([ &
+        new_suite("engine", collect_engine()), &
+        new_suite("collapse", collect_collapse()), &
+        new_suite("calendar", collect_calendar()), &
+        new_suite("limits", collect_limits()), &
+        new_suite("replays", collect_replays()), &
+        new_suite("labels", collect_labels()), &
+        new_suite("scenes", collect_scenes()), &
+        new_suite("proofs", collect_proofs()), &
+        new_suite("auto", collect_auto()), &
+        new_suite("front", collect_front()), &
+        new_suite("cli", collect_cli())])
 end program check

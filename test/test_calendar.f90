@@ -6,6 +6,7 @@ module test_calendar
     use sphere_row, only: qp, scene_t, run_t, event_log_t, scene_init, simulate, str, &
         status_normal, status_collapsed, itoa
     use testsuite, only: error_t, unittest_t, new_unittest, check, seed_random, cases
+    use test_support, only: random_row
     implicit none
     private
     public :: collect_calendar
@@ -42,17 +43,19 @@ contains
         type(pair_t), intent(inout) :: both
         logical, intent(in) :: logged
         scene%calendar_from = always
-        if (logged) then
-            call simulate(scene, both%cal, both%log_cal)
-        else
-            call simulate(scene, both%cal)
-        end if
+        call run_one(both%cal, both%log_cal)
         scene%calendar_from = never
-        if (logged) then
-            call simulate(scene, both%scan, both%log_scan)
-        else
-            call simulate(scene, both%scan)
-        end if
+        call run_one(both%scan, both%log_scan)
+    contains
+        subroutine run_one(run, log)
+            type(run_t), intent(inout) :: run
+            type(event_log_t), intent(inout) :: log
+            if (logged) then
+                call simulate(scene, run, log)
+            else
+                call simulate(scene, run)
+            end if
+        end subroutine run_one
     end subroutine run_both
 
     !> A run without collapse: the same count, status, events (kind and
@@ -99,9 +102,8 @@ contains
         type(error_t), allocatable, intent(out) :: error
         type(scene_t) :: scene
         type(pair_t) :: both
-        real(qp) :: u(42), spread
-        integer :: stat, i, p, bits, compared, collapsed, apart
-        character(len=200) :: msg
+        real(qp) :: spread
+        integer :: i, bits, compared, collapsed, apart
         integer, parameter :: cap = 3000
         integer :: scenes
         scenes = cases(100, 3000)
@@ -111,11 +113,7 @@ contains
         collapsed = 0
         apart = 0
         do i = 1, scenes
-            call random_number(u)
-            p = 2 + int(19*u(1))
-            call scene_init(scene, stat, msg, p=p, e=u(2), &
-                masses=merge(1.0_qp, 1.0e3_qp**(2*u(3:p + 2) - 1), u(42) < 0.5_qp), &
-                gaps=merge(0.0_qp, 2*u(23:p + 21), u(23:p + 21) < 0.2_qp), max_collisions=cap)
+            call random_row(scene, 0.2_qp, cap)
             call run_both(scene, both, .true.)
             if (both%scan%status == status_normal .or. both%cal%status == status_normal) then
                 call check_same_run(scene, both, .true., error)

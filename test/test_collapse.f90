@@ -8,7 +8,7 @@ module test_collapse
         answer_unresolved, answer_word, struck_least
     use sphere_row_cascade, only: cascade_jump
     use testsuite, only: error_t, unittest_t, new_unittest, check, seed_random, cases
-    use test_support, only: scene_of
+    use test_support, only: scene_of, random_row
     implicit none
     private
     public :: collect_collapse
@@ -655,9 +655,8 @@ contains
         type(error_t), allocatable, intent(out) :: error
         type(scene_t) :: scene
         type(run_t) :: with, without
-        real(qp) :: u(42), v0(20), scale
-        integer :: stat, i, p, finite, limited
-        character(len=200) :: msg
+        real(qp) :: v0(20), scale
+        integer :: i, p, finite, limited
         integer, parameter :: cap = 5000
         integer :: scenes
         scenes = cases(100, 1000)
@@ -665,11 +664,8 @@ contains
         finite = 0
         limited = 0
         do i = 1, scenes
-            call random_number(u)
-            p = 2 + int(19*u(1))
-            call scene_init(scene, stat, msg, p=p, e=u(2), &
-                masses=merge(1.0_qp, 1.0e3_qp**(2*u(3:p + 2) - 1), u(42) < 0.5_qp), &
-                gaps=merge(0.0_qp, 2*u(23:p + 21), u(23:p + 21) < 0.2_qp), max_collisions=cap)
+            call random_row(scene, 0.2_qp, cap)
+            p = scene%p
             call simulate(scene, with)
             scene%closed_form_limits = .false.
             call simulate(scene, without)

@@ -1,6 +1,7 @@
-!> Tests of the front door: one table of malformed inputs, each run against the
-!> real `sphere-row` executable and through the parser in this process, plus
-!> accepted inputs and the strict readers on their own.
+!> Tests of the front door: one table of malformed inputs
+!> (test/malformed_inputs.tsv), each run against the real `sphere-row`
+!> executable and through the parser in this process, plus accepted inputs and
+!> the strict readers on their own.
 !>
 !> A row's argument list is written with blanks between arguments; inside an
 !> argument `\s` stands for a blank, `\n` for a line feed, `\t` for a tab,
@@ -18,12 +19,15 @@ module test_front
     use sphere_row_error, only: input_error_t => error_t
     use testsuite, only: error_t, unittest_t, new_unittest, check, read_text, count_lines
     use test_cli, only: program_path
+    use test_support, only: words
     implicit none
     private
     public :: collect_front, malformed_inputs, bad_case_t
 
     character(len=*), parameter :: dir = "build/test_front"
     character(len=*), parameter :: out_file = dir//"/out", err_file = dir//"/err"
+    !> The table of malformed inputs (read_bad_rows).
+    character(len=*), parameter :: bad_table = "test/malformed_inputs.tsv"
 
     !> One malformed input: the arguments, the exit status expected of
     !> `sphere-row` and a text its one-line message must contain.
@@ -59,312 +63,54 @@ contains
             ]
     end function collect_front
 
-    pure function bad(args, status, expect) result(row)
-        character(len=*), intent(in) :: args, expect
-        integer, intent(in) :: status
-        type(bad_case_t) :: row
-        row%args = args
-        row%status = status
-        row%expect = expect
-    end function bad
-
-    !> Every malformed input the front door must refuse.
+    !> Every malformed input the front door must refuse: the rows of
+    !> test/malformed_inputs.tsv (read_bad_rows), and one row too long to write
+    !> there.
     function malformed_inputs() result(rows)
         type(bad_case_t), allocatable :: rows(:)
-        rows = [bad_number_syntax(), bad_not_numbers(), bad_beyond_real16(), bad_out_of_range(), &
-            bad_integers(), bad_lists(), bad_keys_twice(), bad_unknown_keys(), &
-            bad_scales(), bad_scene_files(), bad_real8(), bad_subnormal(), bad_words(), &
-            bad_hostile_files()]
+        rows = [read_bad_rows(bad_table), &
+            bad_case_t("e="//repeat("7x", 600), 2, "e = "//repeat("7x", 600)//": not a number")]
     end function malformed_inputs
 
-    !> Malformed inputs: numbers that list-directed input would take.
-    function bad_number_syntax() result(rows)
+    !> The rows of a table of malformed inputs: a header row, then one row a
+    !> refusal with the columns group (which kind of refusal: number_syntax,
+    !> not_numbers, beyond_real16, out_of_range, integers, lists, keys_twice,
+    !> unknown_keys, scales, scene_files, real8 with precision = dp, subnormal,
+    !> words, hostile_files), args (see the module's comment), status (the
+    !> exit status expected) and expect (a text the message must contain). A
+    !> line that is not four fields, or a file without the header (or not
+    !> readable), comes back as a row of status -1 naming what is wrong, which
+    !> test_table_size refuses.
+    function read_bad_rows(file) result(rows)
+        character(len=*), intent(in) :: file
         type(bad_case_t), allocatable :: rows(:)
-        rows = [ &
-            bad("e=1-5", 2, "e = 1-5: not a number"), &
-            bad("v0=1+2", 2, "v0 = 1+2: not a number"), &
-            bad("d=2-3", 2, "d = 2-3: not a number"), &
-            bad("e=0.5q0", 2, "e = 0.5q0: not a number"), &
-            bad("e=0.5_16", 2, "e = 0.5_16: not a number"), &
-            bad("e=1,5", 2, "e = 1,5: not a number"), &
-            bad("e=1/2", 2, "e = 1/2: not a number"), &
-            bad("e=(0.5)", 2, "e = (0.5): not a number"), &
-            bad("e=.5.", 2, "e = .5.: not a number"), &
-            bad("e=0.5.1", 2, "e = 0.5.1: not a number") &
-            ]
-    end function bad_number_syntax
-
-    !> Malformed inputs: not numbers at all.
-    function bad_not_numbers() result(rows)
-        type(bad_case_t), allocatable :: rows(:)
-        rows = [ &
-            bad("e=abc", 2, "e = abc: not a number"), &
-            bad("e=nan", 2, "e = nan: not a number"), &
-            bad("e=NaN", 2, "e = NaN: not a number"), &
-            bad("v0=inf", 2, "v0 = inf: not a number"), &
-            bad("v0=Infinity", 2, "v0 = Infinity: not a number"), &
-            bad("v0=-inf", 2, "v0 = -inf: not a number"), &
-            bad("e=", 2, "e = : no value"), &
-            bad("e=.", 2, "e = .: not a number"), &
-            bad("e=+", 2, "e = +: not a number"), &
-            bad("e=1e", 2, "e = 1e: not a number"), &
-            bad("e=1e+", 2, "e = 1e+: not a number"), &
-            bad("e=e5", 2, "e = e5: not a number"), &
-            bad("e=0x1p-1", 2, "e = 0x1p-1: not a number"), &
-            bad("e=--0.5", 2, "e = --0.5: not a number"), &
-            bad("e=0.5e1.0", 2, "e = 0.5e1.0: not a number"), &
-            bad("e=0.5\s", 2, "e = 0.5 : not a number"), &
-            bad("e=\s0.5", 2, "e =  0.5: not a number"), &
-            bad("e=0.5\n1", 2, "e = 0.5\n1: not a number"), &
-            bad("e=0.5\t", 2, "e = 0.5\t: not a number"), &
-            bad("e="//repeat("7x", 600), 2, "e = "//repeat("7x", 600)//": not a number") &
-            ]
-    end function bad_not_numbers
-
-    !> Malformed inputs: numbers real(16) cannot hold.
-    function bad_beyond_real16() result(rows)
-        type(bad_case_t), allocatable :: rows(:)
-        rows = [ &
-            bad("v0=1e5000", 2, "v0 = 1e5000: beyond the largest real(16)"), &
-            bad("v0=-1e5000", 2, "v0 = -1e5000: beyond the largest real(16)"), &
-            bad("d=1d5000", 2, "d = 1d5000: beyond the largest real(16)"), &
-            bad("tol=1e-5000", 2, "tol = 1e-5000: too small for real(16)"), &
-            bad("e=1.00000000000000000000000000000000001", 2, &
-            "e = 1.00000000000000000000000000000000001: allowed 0 <= e <= 1"), &
-            bad("e=1.0000000000000000000000000000000000000000000000000001", 2, &
-            ": allowed 0 <= e <= 1"), &
-            bad("tol=-0.0000000000000000000000000000000000000000001", 2, &
-            ": allowed 0 <= tol < 1"), &
-            bad("v0=1e-99999", 2, "v0 = 1e-99999: too small for real(16)") &
-            ]
-    end function bad_beyond_real16
-
-    !> Malformed inputs: out of range.
-    function bad_out_of_range() result(rows)
-        type(bad_case_t), allocatable :: rows(:)
-        rows = [ &
-            bad("e=1.5", 2, "e = 1.5: allowed 0 <= e <= 1"), &
-            bad("e=-0.1", 2, "e = -0.1: allowed 0 <= e <= 1"), &
-            bad("v0=0", 2, "v0 = 0: allowed v0 > 0"), &
-            bad("v0=-1", 2, "v0 = -1: allowed v0 > 0"), &
-            bad("d=-1", 2, "d = -1: allowed d >= 0"), &
-            bad("a=-1", 2, "a = -1: allowed a >= 0"), &
-            bad("tol=1", 2, "tol = 1: allowed 0 <= tol < 1"), &
-            bad("tol=-1e-3", 2, "tol = -1e-3: allowed 0 <= tol < 1") &
-            ]
-    end function bad_out_of_range
-
-    !> Malformed inputs: integers.
-    function bad_integers() result(rows)
-        type(bad_case_t), allocatable :: rows(:)
-        rows = [ &
-            bad("p=1", 2, "p = 1: allowed an integer 2 <= p <= 1000000"), &
-            bad("p=2.5", 2, "p = 2.5: not an integer"), &
-            bad("p=4e0", 2, "p = 4e0: not an integer"), &
-            bad("p=0x4", 2, "p = 0x4: not an integer"), &
-            bad("p=", 2, "p = : no value"), &
-            bad("p=99999999999", 2, "p = 99999999999: beyond the largest integer"), &
-            bad("p=1000001", 2, "p = 1000001: allowed an integer 2 <= p <= 1000000"), &
-            bad("max_collisions=-1", 2, "max_collisions = -1: allowed an integer"), &
-            bad("max_collisions=1.5", 2, "max_collisions = 1.5: not an integer"), &
-            bad("max_collisions=-5", 2, "max_collisions = -5: allowed") &
-            ]
-    end function bad_integers
-
-    !> Malformed inputs: lists.
-    function bad_lists() result(rows)
-        type(bad_case_t), allocatable :: rows(:)
-        rows = [ &
-            bad("masses=1,1,1", 2, "masses = 1,1,1: 3 values given; allowed exactly p = 4"), &
-            bad("masses=1,0,1,1", 2, "masses = 1,0,1,1: value 2 is 0; allowed"), &
-            bad("masses=1,x,1,1", 2, "masses = 1,x,1,1: value 2 = x: not a number"), &
-            bad("masses=1,,1,1", 2, "masses = 1,,1,1: value 2 is empty"), &
-            bad("masses=1,1,1,1,", 2, "masses = 1,1,1,1,: value 5 is empty"), &
-            bad("masses=,1,1,1", 2, "masses = ,1,1,1: value 1 is empty"), &
-            bad("masses=1;1;1;1", 2, "masses = 1;1;1;1: value 1"), &
-            bad("masses=1\s1\s1\s1", 2, "masses = 1 1 1 1: value 1"), &
-            bad("masses=1,1e5000,1,1", 2, "value 2 = 1e5000: beyond the largest real(16)"), &
-            bad("gaps=1,1", 2, "gaps = 1,1: 2 values given; allowed exactly p-1 = 3"), &
-            bad("gaps=1,-1,1", 2, "gaps = 1,-1,1: value 2 is -1; allowed"), &
-            bad("gaps=1,nan,1", 2, "gaps = 1,nan,1: value 2 = nan: not a number"), &
-            bad("p=3 gaps=1,1,1", 2, "gaps = 1,1,1: 3 values given; allowed exactly p-1 = 2"), &
-            bad("masses=1, 2, 3, 4", 2, "argument 'masses=1, 2, 3, 4': the blanks in the list " &
-            //"split it into 4 arguments; allowed key=value as one argument: masses=1,2,3,4"), &
-            bad("velocities=1, -1, .5, 0", 2, "argument 'velocities=1, -1, .5, 0': the blanks in " &
-            //"the list split it into 4 arguments; allowed key=value as one argument: " &
-            //"velocities=1,-1,.5,0"), &
-            bad("gaps=1 ,2,3", 2, "argument 'gaps=1 ,2,3': the blanks in the list split it " &
-            //"into 2 arguments; allowed key=value as one argument: gaps=1,2,3"), &
-            bad("p=4 masses = 1, 2, 3, 4 e=0.5", 2, "argument 'masses = 1, 2, 3, 4': the blanks " &
-            //"around '=' and in the list split it into 6 arguments; allowed key=value as one " &
-            //"argument: masses=1,2,3,4"), &
-            bad("masses=1, x,1,1", 2, "masses = 1,: value 2 is empty") &
-            ]
-    end function bad_lists
-
-    !> Malformed inputs: keys given twice, or with the key that overrides them.
-    function bad_keys_twice() result(rows)
-        type(bad_case_t), allocatable :: rows(:)
-        rows = [ &
-            bad("e=0.5 e=0.6", 2, "e = 0.6: e is given twice (first e = 0.5)"), &
-            bad("p=4 p=4", 2, "p = 4: p is given twice"), &
-            bad("events=yes events=no", 2, "events = no: events is given twice"), &
-            bad("gaps=1,1,1 a=-1", 2, "a = -1"), &
-            bad("gaps=1,1,1 a=1", 2, "a = 1: gaps = 1,1,1 is given too"), &
-            bad("a=1 gaps=1,1,1", 2, "a = 1: gaps = 1,1,1 is given too") &
-            ]
-    end function bad_keys_twice
-
-    !> Malformed inputs: unknown keys and stray arguments.
-    function bad_unknown_keys() result(rows)
-        type(bad_case_t), allocatable :: rows(:)
-        character(len=*), parameter :: table_rule = "allowed yes, no or the name of a file " &
-            //"ending in .tsv"
-        rows = [ &
-            bad("foo=1", 2, "foo = 1: unknown key; allowed keys: p, e,"), &
-            bad("E=0.5", 2, "E = 0.5: unknown key (did you mean e?); allowed keys: p, e,"), &
-            bad("mases=1,1,1,1", 2, "mases = 1,1,1,1: unknown key (did you mean masses?)"), &
-            bad("Max_Colisions=5", 2, "unknown key (did you mean max_collisions?)"), &
-            bad("x=1", 2, "x = 1: unknown key; allowed keys"), &
-            bad("e = 0.5", 2, "argument 'e = 0.5': the blanks around '=' split it into 3 " &
-            //"arguments; allowed key=value as one argument: e=0.5"), &
-            bad("p=6 e= 0.5", 2, "argument 'e= 0.5': the blanks around '=' split it into 2 " &
-            //"arguments; allowed key=value as one argument: e=0.5"), &
-            bad("e =0.5", 2, "argument 'e =0.5': the blanks around '=' split it into 2"), &
-            bad("e =", 2, "argument 'e =': the blanks around '=' split it into 2"), &
-            bad("--version=1", 2, "--version = 1: unknown key"), &
-            bad("\se=0.5", 2, " e = 0.5: unknown key"), &
-            bad("-e=0.5", 2, "-e = 0.5: unknown key"), &
-            bad("=0.5", 2, "argument '=0.5': no key before '='"), &
-            bad("--foo", 2, "argument '--foo': allowed key=value"), &
-            bad("\e", 2, "argument '': allowed key=value"), &
-            bad("events=maybe", 2, "events = maybe: "//table_rule), &
-            bad("events=Yes", 2, "events = Yes: "//table_rule), &
-            bad("events=.tsv", 2, "events = .tsv: "//table_rule), &
-            bad("events=out.TSV", 2, "events = out.TSV: allowed yes, no"), &
-            bad("events=\sout.tsv", 2, "events =  out.tsv: allowed yes, no"), &
-            bad("events=", 2, "events = : allowed yes, no") &
-            ]
-    end function bad_unknown_keys
-
-    !> Malformed inputs: scenes whose scales real(16) cannot hold.
-    function bad_scales() result(rows)
-        type(bad_case_t), allocatable :: rows(:)
-        rows = [ &
-            bad("d=1e4932", 2, "d = 1e4932: the row's length"), &
-            bad("a=1e4932", 2, "a = 1e4932: the row's length"), &
-            bad("gaps=1e4932,1e4932,1", 2, "gaps = 1e4932,1e4932,1: the row's length"), &
-            bad("gaps=1e4000,1,1 v0=1e-1000", 2, "v0 = 1e-1000: the time scale"), &
-            bad("v0=1e4932", 2, "v0 = 1e4932: the velocity scale"), &
-            bad("masses=1e-4000,1e4000,1,1", 2, "masses = 1e-4000,1e4000,1,1: sum(masses)"), &
-            bad("gaps=1e4931,1e4931,1e4931", 2, "gaps = 1e4931,1e4931,1e4931: the positions'"), &
-            bad("masses=1e-2000,1,1,1 gaps=1e2933,1,1", 2, "masses = 1e-2000,1,1,1: the pos") &
-            ]
-    end function bad_scales
-
-    !> Malformed inputs: scene files.
-    function bad_scene_files() result(rows)
-        type(bad_case_t), allocatable :: rows(:)
-        rows = [ &
-            bad("no_such_file.nml", 2, "file 'no_such_file.nml': cannot be opened"), &
-            bad("F/good.nml F/good.nml", 2, "good.nml': a second scene file (the first is '"), &
-            bad("F/element.nml", 2, "element.nml': masses(4) = 2: not a key name"), &
-            bad("F/list_directed.nml", 2, "list_directed.nml': e = 1-5: not a number"), &
-            bad("F/repeat.nml", 2, "repeat.nml': masses = 4*1: value 1 = 4*1"), &
-            bad("F/null.nml", 2, "null.nml': masses = 1,,1,1: an empty value"), &
-            bad("F/unknown.nml", 2, "unknown.nml': foo = 1: unknown key"), &
-            bad("F/twice.nml", 2, "twice.nml': e = 0.6: e is given twice in the file"), &
-            bad("F/events.nml", 2, "events.nml': events = yes: unknown key"), &
-            bad("F/no_group.nml", 2, "no_group.nml': begins with 'e=0.5'"), &
-            bad("F/other_group.nml", 2, "other_group.nml': begins with '&other'"), &
-            bad("F/unended.nml", 2, "unended.nml': no '/' ends the group"), &
-            bad("F/after_end.nml", 2, "after_end.nml': text after the '/'"), &
-            bad("F/two_values.nml", 2, "two_values.nml': e = 0.5, 0.6: 2 values"), &
-            bad("F/empty.nml", 2, "empty.nml': empty"), &
-            bad("F/range.nml e=0.5", 2, "range.nml': e = 2: allowed 0 <= e <= 1"), &
-            bad("F/gaps.nml a=2", 2, "a = 2: gaps = 1,2,3 is given too"), &
-            bad("F/gaps.nml p=3", 2, "gaps.nml': gaps = 1,2,3: 3 values given; allowed " &
-            //"exactly p-1 = 2"), &
-            bad("F/masses.nml", 2, "masses.nml': masses = 1,1,1: 3 values given; allowed " &
-            //"exactly p = 4 values"), &
-            bad("F/misspelt.nml", 2, "misspelt.nml': mases = 1,1,1,1: unknown key (did you " &
-            //"mean masses?)"), &
-            bad("F/scale.nml", 2, "scale.nml': d = 1e4932: the row's length"), &
-            bad("F", 2, "test_front': a directory; allowed a readable regular file") &
-            ]
-    end function bad_scene_files
-
-    !> Malformed inputs with precision = dp: values and scales real(8) cannot hold.
-    function bad_real8() result(rows)
-        type(bad_case_t), allocatable :: rows(:)
-        character(len=*), parameter :: below = "below the smallest normal real(8) number", &
-            beyond = "beyond the largest real(8) number"
-        rows = [ &
-            bad("v0=1e-400 precision=dp", 2, "v0 = 1e-400: precision = dp: "//below), &
-            bad("v0=1e400 precision=dp", 2, "v0 = 1e400: precision = dp: "//beyond), &
-            bad("d=1e400 precision=dp", 2, "d = 1e400: precision = dp: "//beyond), &
-            bad("a=1e400 precision=dp", 2, "a = 1e400: precision = dp: "//beyond), &
-            bad("e=1e-400 precision=dp", 2, "e = 1e-400: precision = dp: "//below), &
-            bad("masses=1e-400,1,1,1 precision=dp", 2, "value 1 is 1e-400: "//below), &
-            bad("masses=1e-400,1e-400,1e-400,1e-400 precision=dp", 2, "masses = 1e-400,"), &
-            bad("gaps=1,1e-310,1 precision=dp", 2, "gaps = 1,1e-310,1: precision = dp: value 2"), &
-            bad("d=1e308 precision=dp", 2, "d = 1e308: the row's length (p-1) d + sum(gaps) " &
-            //"overflows real(8) (precision = dp)"), &
-            bad("v0=1e-300 a=1e10 precision=dp", 2, "v0 = 1e-300: the time scale"), &
-            bad("v0=1e308 precision=dp", 2, "v0 = 1e308: the velocity scale") &
-            ]
-    end function bad_real8
-
-    !> Malformed inputs: values below the normal range of real(16), which
-    !> would run with other digits than the ones given.
-    function bad_subnormal() result(rows)
-        type(bad_case_t), allocatable :: rows(:)
-        character(len=*), parameter :: small = "too small for real(16): not 0 and below its " &
-            //"smallest normal number 3.3621e-4932"
-        rows = [ &
-            bad("a=1e-4964", 2, "a = 1e-4964: "//small), &
-            bad("a=1e-4965", 2, "a = 1e-4965: "//small), &
-            bad("v0=1e-4940", 2, "v0 = 1e-4940: "//small), &
-            bad("tol=1e-4940", 2, "tol = 1e-4940: "//small), &
-            bad("d=-1e-4933", 2, "d = -1e-4933: "//small), &
-            bad("masses=1e-4962,3e-4962,1e-4962,1e-4962", 2, "value 1 = 1e-4962: "//small), &
-            bad("gaps=1,1e-4935,1", 2, "gaps = 1,1e-4935,1: value 2 = 1e-4935: "//small) &
-            ]
-    end function bad_subnormal
-
-    !> Malformed inputs: words with something around them, words of no choice.
-    function bad_words() result(rows)
-        type(bad_case_t), allocatable :: rows(:)
-        rows = [ &
-            bad("events=yes\s", 2, "events = yes : allowed yes, no"), &
-            bad("events=\tno", 2, "events = \tno: allowed yes, no"), &
-            bad("precision=qp\s", 2, "precision = qp : allowed qp, dp or auto"), &
-            bad("precision=\sauto", 2, "precision =  auto: allowed qp, dp or auto"), &
-            bad("precision=QP", 2, "precision = QP: allowed qp, dp or auto"), &
-            bad("precision=q", 2, "precision = q: allowed qp, dp or auto"), &
-            bad("precision=qp,dp", 2, "precision = qp,dp: allowed qp, dp or auto"), &
-            bad("precision=", 2, "precision = : allowed qp, dp or auto"), &
-            bad("e=\xff", 2, "e = \xff: not a number"), &
-            bad("\xc3\xa9=1", 2, "\xc3\xa9 = 1: unknown key"), &
-            bad("events=yes precision=dp", 2, "allowed only with precision = qp"), &
-            bad("events=x.tsv precision=auto", 2, "events = x.tsv with precision = auto: " &
-            //"allowed only with precision = qp") &
-            ]
-    end function bad_words
-
-    !> Malformed inputs: what is not a scene file.
-    function bad_hostile_files() result(rows)
-        type(bad_case_t), allocatable :: rows(:)
-        rows = [ &
-            bad("/dev/zero", 2, "file '/dev/zero': not a regular file"), &
-            bad("/dev/urandom", 2, "file '/dev/urandom': not a regular file"), &
-            bad("F/fifo", 2, "fifo': not a regular file (a device, a FIFO or a socket)"), &
-            bad("F/binary.nml", 2, "binary.nml': byte 10 is the control character \x00"), &
-            bad("F/escape.nml", 2, "escape.nml': byte 7 is the control character \x1b"), &
-            bad("F/unicode.nml", 2, "unicode.nml': e = 0.\xc2\xbd: not a number"), &
-            bad("--", 2, "argument '--': allowed key=value") &
-            ]
-    end function bad_hostile_files
+        character(len=:), allocatable :: text
+        character(len=*), parameter :: tab = achar(9), header = "group"//tab//"args"//tab &
+            //"status"//tab//"expect"
+        integer :: first, last, n, t1, t2, t3, ios
+        text = read_text(file)
+        last = index(text, new_line("a")) - 1
+        if (last < 0 .or. text(:max(last, 0)) /= header) then
+            rows = [bad_case_t(file//": no header row '"//header//"'", -1, "")]
+            return
+        end if
+        allocate (rows(count_lines(text) - 1))
+        do n = 1, size(rows)
+            first = last + 2
+            last = first + index(text(first:), new_line("a")) - 2
+            t1 = index(text(first:last), tab) + first - 1
+            t2 = index(text(t1 + 1:last), tab) + t1
+            t3 = index(text(t2 + 1:last), tab) + t2
+            rows(n)%args = text(t1 + 1:t2 - 1)
+            rows(n)%expect = text(t3 + 1:last)
+            read (text(t2 + 1:t3 - 1), *, iostat=ios) rows(n)%status
+            if (t1 < first .or. t2 <= t1 .or. t3 <= t2 .or. index(text(t3 + 1:last), tab) > 0 &
+                .or. ios /= 0) then
+                rows(n)%status = -1
+                rows(n)%args = file//" line "//itoa(n + 1)//": not four tab-separated fields"
+            end if
+        end do
+    end function read_bad_rows
 
     !> The scene files the table names.
     subroutine write_scene_files()
@@ -409,22 +155,10 @@ contains
     function decode(row) result(args)
         character(len=*), intent(in) :: row
         type(string_t), allocatable :: args(:)
-        integer :: start, i, n
-        n = 1
-        do i = 1, len(row)
-            if (row(i:i) == " ") n = n + 1
-        end do
-        allocate (args(n))
-        start = 1
+        integer :: n
+        args = words(row)
         do n = 1, size(args)
-            i = index(row(start:), " ")
-            if (i == 0) then
-                i = len(row) + 1
-            else
-                i = start + i - 1
-            end if
-            args(n)%s = unescape(row(start:i - 1))
-            start = i + 1
+            args(n)%s = unescape(args(n)%s)
         end do
     end function decode
 

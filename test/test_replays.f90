@@ -6,12 +6,23 @@ module test_replays
     use sphere_row, only: qp, dp, scene_t, run_t, scene_dp_t, run_dp_t, event_log_dp_t, &
         scene_init, simulate, str, itoa, answer_word, answer_exact
     use testsuite, only: error_t, unittest_t, new_unittest, check
+    use test_support, only: scene_of
     implicit none
     private
     public :: collect_replays
 
     !> Unit roundoff of real(16), the precision of the cycle's replay.
     real(qp), parameter :: eps = epsilon(1.0_qp)
+
+    !> A scene whose closed-form limits are checked against their replay.
+    type :: replay_t
+        !> What it shows (the failure messages' prefix).
+        character(len=:), allocatable :: what
+        !> True if its limits must be exact and answered so.
+        logical :: exact = .false.
+        !> The scene as sphere-row's command line takes it (test_support).
+        character(len=:), allocatable :: keys
+    end type replay_t
 
 contains
 
@@ -20,9 +31,7 @@ contains
         type(unittest_t), allocatable :: tests(:)
         tests = [ &
             new_unittest("calendar_removals_keep_the_scan_order", test_calendar_removals), &
-            new_unittest("cycle_refused_while_a_neighbour_may_strike", test_cycle_neighbour), &
-            new_unittest("cycle_refused_while_another_contact_closes", test_cycle_outside), &
-            new_unittest("plastic_pool_exact_as_its_replay", test_plastic_replay) &
+            new_unittest("closed_form_limits_as_their_replays", test_replay_rows) &
             ]
     end function collect_replays
 
@@ -82,74 +91,62 @@ contains
             //itoa(cal%limits%n)//" and "//itoa(scan%limits%n))
     end subroutine test_calendar_removals
 
-    !> Seven spheres (masses 0.144 to 26.1): after 110 collisions spheres
-    !> 3..5 (the light sphere 4 between the heavy 3 and 5) repeat a pattern of
-    !> collisions at one instant, a cascade through touching spheres, and
-    !> sphere 6 touches sphere 5. The relative kinetic energy of the group
-    !> lets sphere 5 move on to sphere 6 faster than sphere 6 recedes, so the
-    !> pattern is no certified cycle: the cascade runs on through spheres
-    !> 3..7. The run with its closed-form limits must end where the same scene
-    !> ends with them off, each collision stepped and every collapse taken by
-    !> the fallback or the bounded cascade (29,830 collisions): the same
-    !> velocities to within the two runs' bounds (they agree to 1e-34 here,
-    !> measured) and the same end time to 1e-20 of it (1e-30, measured). A
-    !> cycle certified while its right neighbour may strike it ends the run
-    !> after 120 collisions, at t = 27.04 for 26.08, with velocities off by
-    !> 1.7e-4.
-    subroutine test_cycle_neighbour(error)
+    !> Rows whose closed-form limits must end where their stepped replay
+    !> ends (check_replay), each with what it shows and why it is here; a row
+    !> marked exact must also take a limit and answer exact.
+    subroutine test_replay_rows(error)
         type(error_t), allocatable, intent(out) :: error
+        type(replay_t), allocatable :: rows(:)
         type(scene_t) :: scene
         type(run_t) :: closed
-        integer :: stat
-        character(len=200) :: msg
-        call scene_init(scene, stat, msg, p=7, e=0.367_qp, &
-            masses=[4.838_qp, 2.886_qp, 26.125_qp, 0.144_qp, 18.4_qp, 6.16_qp, 2.728_qp], &
-            gaps=[0.369_qp, 0.0_qp, 0.312_qp, 0.3_qp, 0.372_qp, 0.0_qp])
-        call check_replay(scene, "cycle and neighbour", closed, error)
-    end subroutine test_cycle_neighbour
-
-    !> Five touching spheres, two light ones (0.048 and 0.033) ahead of three
-    !> heavy (6.6, 16 and 9.1), struck at t = 0 at e = 0.0913: all their
-    !> collisions are at one instant. After 23 of them spheres 1..3 repeat a
-    !> pattern whose limit is at that same instant, while contact 3 (spheres
-    !> 3 and 4) still closes at it: the limit may not be taken before that
-    !> strike. The run with its closed-form limits (36 collisions) must end
-    !> where its stepped replay (234) ends, velocities within the two bounds
-    !> (equal to the last bit here, measured); a cycle certified although
-    !> another contact closes before its accumulation time ends 1.6e-6 away.
-    subroutine test_cycle_outside(error)
-        type(error_t), allocatable, intent(out) :: error
-        type(scene_t) :: scene
-        type(run_t) :: closed
-        integer :: stat
-        character(len=200) :: msg
-        call scene_init(scene, stat, msg, p=5, e=0.0913_qp, &
-            masses=[0.0479_qp, 0.0332_qp, 6.57_qp, 16.4_qp, 9.11_qp], &
-            gaps=[0.0_qp, 0.0_qp, 0.0_qp, 0.0_qp])
-        call check_replay(scene, "cycle and another contact", closed, error)
-    end subroutine test_cycle_outside
-
-    !> At e = 0 a cascade through touching spheres pools them (docs/collapse.md,
-    !> rule 1): sphere 1 of five (masses 0.5 to 2) strikes the touching
-    !> spheres 2..4, and the four merge at once into one block, which then
-    !> strikes sphere 5 and takes it in (a second limit). These limits are
-    !> exact: the answer says so, and the stepped replay, each plastic
-    !> collision of the cascades taken until the rates are insignificant
-    !> (1068 collisions), ends at the same velocities to within its bound.
-    subroutine test_plastic_replay(error)
-        type(error_t), allocatable, intent(out) :: error
-        type(scene_t) :: scene
-        type(run_t) :: closed
-        integer :: stat
-        character(len=200) :: msg
-        call scene_init(scene, stat, msg, p=5, e=0.0_qp, &
-            masses=[1.0_qp, 0.5_qp, 2.0_qp, 1.5_qp, 0.7_qp], gaps=[1.0_qp, 0.0_qp, 0.0_qp, 1.0_qp])
-        call check_replay(scene, "plastic pool", closed, error)
-        if (allocated(error)) return
-        call check(error, closed%limits%n > 0 .and. closed%answer == answer_exact, &
-            "plastic pool: "//itoa(closed%limits%n)//" limits, answer " &
-            //answer_word(closed%answer))
-    end subroutine test_plastic_replay
+        integer :: i
+        rows = [ &
+            ! Seven spheres (masses 0.144 to 26.1): after 110 collisions spheres
+            ! 3..5 (the light sphere 4 between the heavy 3 and 5) repeat a pattern
+            ! of collisions at one instant, a cascade through touching spheres,
+            ! and sphere 6 touches sphere 5. The relative kinetic energy of the
+            ! group lets sphere 5 move on to sphere 6 faster than sphere 6
+            ! recedes, so the pattern is no certified cycle: the cascade runs on
+            ! through spheres 3..7. The replay (29,830 collisions) agrees to 1e-34
+            ! in the velocities and 1e-30 in the end time (measured). A cycle
+            ! certified while its right neighbour may strike it ends the run after
+            ! 120 collisions, at t = 27.04 for 26.08, with velocities off by 1.7e-4.
+            replay_t("cycle and neighbour", .false., "p=7 e=0.367 " &
+                //"masses=4.838,2.886,26.125,0.144,18.4,6.16,2.728 " &
+                //"gaps=0.369,0,0.312,0.3,0.372,0"), &
+            ! Five touching spheres, two light ones (0.048 and 0.033) ahead of
+            ! three heavy (6.6, 16 and 9.1), struck at t = 0 at e = 0.0913: all
+            ! their collisions are at one instant. After 23 of them spheres 1..3
+            ! repeat a pattern whose limit is at that same instant, while contact
+            ! 3 (spheres 3 and 4) still closes at it: the limit may not be taken
+            ! before that strike. The closed-form run (36 collisions) and its
+            ! replay (234) end at velocities equal to the last bit here
+            ! (measured); a cycle certified although another contact closes
+            ! before its accumulation time ends 1.6e-6 away.
+            replay_t("cycle and another contact", .false., "p=5 e=0.0913 " &
+                //"masses=0.0479,0.0332,6.57,16.4,9.11 gaps=0,0,0,0"), &
+            ! At e = 0 a cascade through touching spheres pools them
+            ! (docs/collapse.md, rule 1): sphere 1 of five (masses 0.5 to 2)
+            ! strikes the touching spheres 2..4, and the four merge at once into
+            ! one block, which then strikes sphere 5 and takes it in (a second
+            ! limit). These limits are exact: the answer says so, and the stepped
+            ! replay, each plastic collision of the cascades taken until the
+            ! rates are insignificant (1068 collisions), ends at the same
+            ! velocities to within its bound.
+            replay_t("plastic pool", .true., "p=5 e=0 masses=1,0.5,2,1.5,0.7 gaps=1,0,0,1") &
+            ]
+        do i = 1, size(rows)
+            call scene_of(rows(i)%keys, scene, error)
+            if (allocated(error)) return
+            call check_replay(scene, rows(i)%what, closed, error)
+            if (allocated(error)) return
+            if (.not. rows(i)%exact) cycle
+            call check(error, closed%limits%n > 0 .and. closed%answer == answer_exact, &
+                rows(i)%what//": "//itoa(closed%limits%n)//" limits, answer " &
+                //answer_word(closed%answer))
+            if (allocated(error)) return
+        end do
+    end subroutine test_replay_rows
 
     !> Run `scene` with its closed-form limits (`closed`) and stepped without
     !> them (every collapse taken by the fallback or the bounded cascade):

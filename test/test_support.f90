@@ -4,14 +4,14 @@
 !> given to the CLI or tools/replay as it stands; and the readers of
 !> tools/replay's table line.
 module test_support
-    use sphere_row, only: qp, scene_t
+    use sphere_row, only: qp, scene_t, scene_init
     use sphere_row_cli, only: cli_t, string_t
     use sphere_row_scene_keys, only: add_scene_keys, add_state_keys, scene_from_cli
     use sphere_row_error, only: input_error_t => error_t
     use testsuite, only: error_t
     implicit none
     private
-    public :: scene_of, split_tabs, read_reals
+    public :: scene_of, random_row, words, split_tabs, read_reals
 
 contains
 
@@ -35,7 +35,27 @@ contains
         end if
     end subroutine scene_of
 
-    !> The blank-separated words of `text`.
+    !> A random row drawn from the intrinsic generator (42 numbers a row, so
+    !> that a seeded test sees the same rows on every run): p from 2 to 20, e
+    !> uniform in [0, 1], masses all 1 or log-uniform in [1e-3, 1e3] (half the
+    !> rows each), gaps uniform in [0, 2) and each closed with probability
+    !> `closed`; at most `cap` collisions. The rows of the random tests of the
+    !> collapse rules and of the calendar.
+    subroutine random_row(scene, closed, cap)
+        type(scene_t), intent(out) :: scene
+        real(qp), intent(in) :: closed
+        integer, intent(in) :: cap
+        real(qp) :: u(42)
+        integer :: p, stat
+        character(len=200) :: msg
+        call random_number(u)
+        p = 2 + int(19*u(1))
+        call scene_init(scene, stat, msg, p=p, e=u(2), &
+            masses=merge(1.0_qp, 1.0e3_qp**(2*u(3:p + 2) - 1), u(42) < 0.5_qp), &
+            gaps=merge(0.0_qp, 2*u(23:p + 21), u(23:p + 21) < closed), max_collisions=cap)
+    end subroutine random_row
+
+    !> The blank-separated words of `text` (runs of blanks separate as one).
     pure function words(text) result(list)
         character(len=*), intent(in) :: text
         type(string_t), allocatable :: list(:)

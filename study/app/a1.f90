@@ -6,9 +6,9 @@ program c12_a1
     use sphere_row, only: qp, dp, scene_t, run_t, event_log_t, scene_dp_t, run_dp_t, &
         scene_init, simulate, gaps_at, str, status_word, status_normal, event_collision, &
         event_collapse, itoa
-    use sphere_row_tables, only: open_table, close_table, write_answer, answer_header, tab
+    use sphere_row_tables, only: open_table, write_answer, answer_header, tab
     use sphere_row_study_cli, only: cli_t, add_scene_keys, start_program, read_keys, fail, &
-        stop_unless_normal, stop_unless_written
+        stop_unless_normal, close_tables
     implicit none
     character(len=*), parameter :: nl = new_line("a")
     type(cli_t) :: cli
@@ -80,8 +80,7 @@ contains
             call write_answer(unit, "a1.y"//itoa(i)//"_end", str(run%y(i)), "-", "-", "-", &
                 "gap at the last collision; afterwards it grows at dy = "//str(run%dy(i)))
         end do
-        call close_table(unit, stat, msg)
-        call stop_unless_written(stat, msg)
+        call close_tables([unit])
     end subroutine write_answers
 
     !> The gaps at their breakpoints: the start, every event inside the window,
@@ -122,8 +121,7 @@ contains
             line = line//tab//str(y(i))
         end do
         write (unit, "(a)") line//tab//"window_end"//tab//"0"//tab//"0"
-        call close_table(unit, stat, msg)
-        call stop_unless_written(stat, msg)
+        call close_tables([unit])
     end subroutine write_paths
 
 end program c12_a1

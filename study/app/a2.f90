@@ -3,9 +3,9 @@
 program c12_a2
     use sphere_row, only: qp, scene_t, run_t, simulate, str, status_word, status_normal, &
         status_collapsed, itoa
-    use sphere_row_tables, only: open_table, close_table, write_answer, answer_header, tab
+    use sphere_row_tables, only: open_table, write_answer, answer_header, tab
     use sphere_row_study_cli, only: cli_t, add_scene_keys, start_program, read_keys, fail, &
-        stop_unless_normal, stop_unless_written
+        stop_unless_normal, close_tables
     implicit none
     character(len=*), parameter :: nl = new_line("a")
     type(cli_t) :: cli
@@ -52,8 +52,7 @@ program c12_a2
     call stop_unless_normal(stat, msg)
     call row("elastic", 1.0_qp, elastic)
     call row("quasi_plastic", e_plastic, plastic)
-    call close_table(unit, stat, msg)
-    call stop_unless_written(stat, msg)
+    call close_tables([unit])
 
     call open_table(out, "a2_answers.tsv", answer_header, unit, stat, msg)
     call stop_unless_normal(stat, msg)
@@ -85,8 +84,7 @@ program c12_a2
             str(scene%m(1)*scene%v0/plain), str(plastic%v(i) - scene%m(1)*scene%v0/plain), &
             "perfectly plastic limit: common velocity m1 v0 / sum(m) by momentum")
     end do
-    call close_table(unit, stat, msg)
-    call stop_unless_written(stat, msg)
+    call close_tables([unit])
 
 contains
 

@@ -4,13 +4,13 @@
 program c12_b1
     use sphere_row, only: qp, scene_t, run_t, event_log_t, simulate, str, status_word, &
         status_normal, status_collapsed, itoa, auto_t, simulate_auto
-    use sphere_row_tables, only: open_table, close_table, write_answer, answer_header, tab, &
+    use sphere_row_tables, only: open_table, write_answer, answer_header, tab, &
         row_t, write_rows
     use sphere_row_analysis, only: sequence_of, sequence_text, sequence_hash, tail_period, &
         critical_restitution
     use sphere_row_bisection, only: bisect_ahead, bisect_changes
     use sphere_row_study_cli, only: cli_t, add_scene_keys, start_program, read_keys, &
-        stop_unless_normal, stop_unless_written, add_precision_key, precision_is_auto
+        stop_unless_normal, close_tables, add_precision_key, precision_is_auto
     use sphere_row_sorting, only: sort
     implicit none
     character(len=*), parameter :: nl = new_line("a")
@@ -128,8 +128,7 @@ contains
         end do
         !$omp end parallel do
         call write_rows(unit, scan_rows)
-        call close_table(unit, stat, msg)
-        call stop_unless_written(stat, msg)
+        call close_tables([unit])
     end subroutine scan
 
     !> Step 2: every change of (n, sequence) between neighbours of the scan,
@@ -270,8 +269,7 @@ contains
                 end if
             end associate
         end do
-        call close_table(unit, stat, msg)
-        call stop_unless_written(stat, msg)
+        call close_tables([unit])
         slope = 0
         intercept = 0
         if (n_fit >= 2) then
@@ -303,8 +301,7 @@ contains
         call write_answer(unit, "b1.n_at_e1", itoa(n_scan_runs(1)), "closed_form", &
             itoa(scene%p - 1), itoa(n_scan_runs(1) - (scene%p - 1)), &
             "e = 1: one collision per pair")
-        call close_table(unit, stat, msg)
-        call stop_unless_written(stat, msg)
+        call close_tables([unit])
     end subroutine write_answers
 
     !> The answers about e_crit: from the collapse cycle and by simulation
@@ -426,8 +423,7 @@ contains
                 sequence_text(at_1%pairs)
             n_intervals = n_intervals + 1
         end if
-        call close_table(unit, stat, msg)
-        call stop_unless_written(stat, msg)
+        call close_tables([unit])
     end subroutine write_intervals
 
     !> A row of b1_intervals.tsv for the collapsed interval from a to b: no

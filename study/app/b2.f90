@@ -4,12 +4,12 @@
 program c12_b2
     use sphere_row, only: qp, scene_t, run_t, event_log_t, simulate, str, &
         status_normal, itoa, auto_t, simulate_auto
-    use sphere_row_tables, only: open_table, close_table, write_answer, answer_header, tab, &
+    use sphere_row_tables, only: open_table, write_answer, answer_header, tab, &
         row_t, write_rows
     use sphere_row_analysis, only: sequence_of, sequence_text, sequence_hash, &
         sequence_polynomials, poly_eval
     use sphere_row_study_cli, only: cli_t, add_scene_keys, start_program, read_keys, &
-        stop_unless_normal, stop_unless_written, add_precision_key, precision_is_auto
+        stop_unless_normal, close_tables, add_precision_key, precision_is_auto
     implicit none
     character(len=*), parameter :: nl = new_line("a")
     !> Sequences longer than this are not written out as polynomials.
@@ -107,10 +107,7 @@ contains
             end if
         end do
         call write_rows(unit, rows)
-        call close_table(unit, stat, msg)
-        call stop_unless_written(stat, msg)
-        call close_table(unit_forms, stat, msg)
-        call stop_unless_written(stat, msg)
+        call close_tables([unit, unit_forms])
     end subroutine tabulate
 
     !> Every point's run, in the precision it needs (precision = auto) or in
@@ -271,8 +268,7 @@ contains
                 str(v_plain), str(run%v(i) - v_plain), "e = 0: the quasi-plastic limit, "// &
                 "common velocity m1 v0 / sum(m)")
         end do
-        call close_table(unit, stat, msg)
-        call stop_unless_written(stat, msg)
+        call close_tables([unit])
     end subroutine write_answers
 
     !> One row per sphere: the polynomial of the current sequence and the grid

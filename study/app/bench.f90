@@ -10,10 +10,10 @@ program c12_bench
         int64
     use sphere_row, only: qp, dp, scene_t, scene_init, status_normal, itoa, real_str
     use sphere_row_kind_engines, only: built_kinds, kind_info_t, kind_engine_t, new_kind_engine
-    use sphere_row_tables, only: open_table, close_table, tab, split_tabs, cpu_model
+    use sphere_row_tables, only: open_table, tab, split_tabs, cpu_model
     use sphere_row_monte_carlo, only: mc_counts_t, monte_carlo_v4
     use sphere_row_study_cli, only: cli_t, start_program, read_keys, fail, stop_unless_normal, &
-        stop_unless_written
+        close_tables
     use sphere_row_sorting, only: median
     implicit none
     character(len=*), parameter :: nl = new_line("a")
@@ -101,8 +101,7 @@ program c12_bench
     else
         call keep(9)
     end if
-    call close_table(unit, stat, msg)
-    call stop_unless_written(stat, msg)
+    call close_tables([unit])
 
 contains
 

@@ -4,11 +4,11 @@ program c12_c1
     use, intrinsic :: iso_fortran_env, only: error_unit
     use sphere_row, only: qp, scene_t, run_t, event_log_t, simulate, str, status_normal, &
         itoa
-    use sphere_row_tables, only: open_table, close_table, write_answer, answer_header, tab
+    use sphere_row_tables, only: open_table, write_answer, answer_header, tab
     use sphere_row_analysis, only: sequence_of, sequence_text
     use sphere_row_secant, only: secant, secant_result_t, secant_word, secant_converged
     use sphere_row_study_cli, only: cli_t, add_scene_keys, start_program, read_keys, fail, &
-        stop_unless_normal, stop_unless_written
+        stop_unless_normal, close_tables
     implicit none
     character(len=*), parameter :: name = "c12-c1"
     character(len=*), parameter :: nl = new_line("a")
@@ -59,8 +59,7 @@ program c12_c1
     do k = 0, main_result%iterations + 1
         write (unit, "(a)") itoa(k)//tab//str(main_result%xs(k))//tab//str(main_result%fs(k))
     end do
-    call close_table(unit, stat, msg)
-    call stop_unless_written(stat, msg)
+    call close_tables([unit])
 
     call open_table(out, "c1_starts.tsv", "x0"//tab//"x1"//tab//"status"//tab//"iterations" &
         //tab//"e_last"//tab//"residual[V]", unit, stat, msg)
@@ -71,8 +70,7 @@ program c12_c1
             secant_word(trial%status)//tab//itoa(trial%iterations)//tab//str(trial%x)//tab// &
             str(trial%f)
     end do
-    call close_table(unit, stat, msg)
-    call stop_unless_written(stat, msg)
+    call close_tables([unit])
 
     call write_answers()
     if (main_result%status /= secant_converged) then
@@ -110,8 +108,7 @@ contains
         call write_answer(unit, "c1.status", secant_word(main_result%status), "-", "-", "-", &
             "flat, left_interval and stagnated are reported, not returned as roots; "// &
             "see c1_starts.tsv")
-        call close_table(unit, stat, msg)
-        call stop_unless_written(stat, msg)
+        call close_tables([unit])
     end subroutine write_answers
 
     !> v4(e) - target v0, the residual of the boundary value problem.

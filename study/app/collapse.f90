@@ -14,10 +14,10 @@ program c12_collapse
     use sphere_row_survey, only: survey_t, survey_open, survey_close, survey_scene, &
         check_invariants, scene_command
     use sphere_row_sorting, only: sort
-    use sphere_row_tables, only: open_table, close_table, write_answer, answer_header, tab, &
+    use sphere_row_tables, only: open_table, write_answer, answer_header, tab, &
         row_t, write_rows
     use sphere_row_study_cli, only: cli_t, start_program, read_keys, stop_unless_normal, &
-        stop_unless_written, fail
+        close_tables, fail
     implicit none
     character(len=*), parameter :: nl = new_line("a")
     !> Rules compared: every collapse rule, the fallback alone.
@@ -217,10 +217,7 @@ contains
                 str(real(maxval(outcome(rule, :rows_of)%seconds), qp))//tab// &
                 str(real(sum(outcome(rule, :rows_of)%seconds), qp))
         end do
-        call close_table(unit, stat, msg)
-        call stop_unless_written(stat, msg)
-        call close_table(unit_time, stat, msg)
-        call stop_unless_written(stat, msg)
+        call close_tables([unit, unit_time])
         call open_table(out, "collapse_by_p.tsv", "p"//tab//"scenes"//tab//answer_columns, &
             unit, stat, msg)
         call stop_unless_normal(stat, msg)
@@ -229,8 +226,7 @@ contains
             write (unit, "(a)") itoa(p)//tab//itoa(count(rows%p == p))//tab// &
                 answer_counts(every, 1, n, p)
         end do
-        call close_table(unit, stat, msg)
-        call stop_unless_written(stat, msg)
+        call close_tables([unit])
         call open_table(out, "collapse_unanswered.tsv", "row"//tab//"p"//tab//"e[1]"//tab// &
             "mass_ratio[1]"//tab//"closed_gaps"//tab//"v_bound[V]"//tab//"active"//tab// &
             "command", unit, stat, msg)
@@ -245,8 +241,7 @@ contains
             lines(k) = outcome(every, j)%row
         end do
         call write_rows(unit, lines)
-        call close_table(unit, stat, msg)
-        call stop_unless_written(stat, msg)
+        call close_tables([unit])
         call open_table(out, "collapse_answers.tsv", answer_header, unit, stat, msg)
         call stop_unless_normal(stat, msg)
         do a = answer_exact, answer_unresolved
@@ -283,8 +278,7 @@ contains
             itoa(count(outcome(every, :)%broken)), "runs that ended with momentum (from the " &
             //"run's own x_1 rate and rates), energy, a gap or a closing pair outside " &
             //str(slack)//" + "//str(per_collision)//" n epsilon of their scales (n collisions)")
-        call close_table(unit, stat, msg)
-        call stop_unless_written(stat, msg)
+        call close_tables([unit])
     end subroutine write_tables
 
     !> The rows of each answer, tab-separated, among rows first..last of a

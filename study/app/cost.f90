@@ -25,9 +25,9 @@ program c12_cost
         scene_dp_t, run_dp_t
     use sphere_row_tight_qp, only: tight_qp => tight_run
     use sphere_row_tight_dp, only: tight_dp => tight_run
-    use sphere_row_tables, only: open_table, close_table, tab
+    use sphere_row_tables, only: open_table, tab
     use sphere_row_study_cli, only: cli_t, start_program, read_keys, fail, stop_unless_normal, &
-        stop_unless_written
+        close_tables
     use sphere_row_sorting, only: median
     use sphere_row_kinds, only: dp
     implicit none
@@ -87,8 +87,7 @@ program c12_cost
     call stop_unless_normal(stat, msg)
     call sweep(1, crossover(1))
     call sweep(2, crossover(2))
-    call close_table(unit, stat, msg)
-    call stop_unless_written(stat, msg)
+    call close_tables([unit])
     call write_summary()
     if (cli%get_flag("loop")) call against_loop()
 
@@ -108,8 +107,7 @@ contains
                 call loop_row(u, loop_scenes(i), trim(precisions(j)))
             end do
         end do
-        call close_table(u, stat, msg)
-        call stop_unless_written(stat, msg)
+        call close_tables([u])
     end subroutine against_loop
 
     !> One scene in one precision against its loop (real(8) for dp, else
@@ -290,8 +288,7 @@ contains
         write (u, "(a)") "elastic.time_ratio_"//itoa(p_long)//"_"//itoa(p_short)//tab// &
             str(real(median(ratios), qp))//tab//"wall time of one elastic row of "//itoa(p_long)// &
             " spheres over one of "//itoa(p_short)//", engine's choice, median of 5 pairs"
-        call close_table(u, stat, msg)
-        call stop_unless_written(stat, msg)
+        call close_tables([u])
     end subroutine write_summary
 
     !> Wall time of one elastic row of p spheres with the engine's choice.

@@ -15,9 +15,9 @@ program c12_differential
     use sphere_row, only: qp, scene_t, run_t, simulate, itoa, str, status_word, real_str, &
         status_normal, status_collapsed
     use sphere_row_survey, only: survey_t, survey_open, survey_close, survey_scene
-    use sphere_row_tables, only: open_table, close_table, tab, split_tabs, row_t, write_rows
+    use sphere_row_tables, only: open_table, tab, split_tabs, row_t, write_rows
     use sphere_row_study_cli, only: cli_t, start_program, read_keys, stop_unless_normal, &
-        stop_unless_written, fail
+        close_tables, fail
     implicit none
     character(len=*), parameter :: nl = new_line("a")
     type(cli_t) :: cli
@@ -90,8 +90,7 @@ contains
             "v1..vp[V]", unit, stat, msg)
         call stop_unless_normal(stat, msg)
         call write_rows(unit, lines)
-        call close_table(unit, stat, msg)
-        call stop_unless_written(stat, msg)
+        call close_tables([unit])
     end subroutine run_rows
 
     !> Compare two tables of the same rows.

@@ -10,9 +10,9 @@
 !> bits for any number of threads and ranks.
 program c12_ecrit
     use sphere_row, only: qp, itoa, real_str
-    use sphere_row_tables, only: open_table, close_table, write_answer, answer_header, tab
+    use sphere_row_tables, only: open_table, write_answer, answer_header, tab
     use sphere_row_study_cli, only: cli_t, start_program, read_keys, fail, stop_unless_normal, &
-        stop_unless_written
+        close_tables
     use sphere_row_ecrit, only: ecrit_settings_t, ecrit_row_t, ecrit_row, power_fit, &
         mcnamara_young_k, mcnamara_young_e, outcome_word, row_bytes, row_from_bytes, edge_t, &
         edge_of, scan_point, decimal_text, digits_of, outcome_finite, outcome_certified, &
@@ -201,8 +201,7 @@ contains
                     //tab//optional_text(real_str(g%finite_min, 36), g%finite_min <= 1.0_qp)
             end associate
         end do
-        call close_table(unit, stat, msg)
-        call stop_unless_written(stat, msg)
+        call close_tables([unit])
     end subroutine write_rows
 
     !> ecrit_map.tsv: every scan as runs of equal outcomes (first and last
@@ -221,8 +220,7 @@ contains
             call write_runs(rows(j), "real64", rows(j)%outcomes_dp)
             call write_runs(rows(j), "real16_deep", rows(j)%outcomes_deep)
         end do
-        call close_table(unit, stat, msg)
-        call stop_unless_written(stat, msg)
+        call close_tables([unit])
     end subroutine write_map
 
     !> The runs of equal outcomes of one scan of row r.
@@ -265,8 +263,7 @@ contains
             call robust_line(rows(j), "real64", s%tol_scan, rows(j)%outcomes_dp)
             call robust_line(rows(j), "real16_deep", s%tol_deep, rows(j)%outcomes_deep)
         end do
-        call close_table(unit, stat, msg)
-        call stop_unless_written(stat, msg)
+        call close_tables([unit])
     end subroutine write_robust
 
     !> One line of ecrit_robust.tsv.
@@ -361,8 +358,7 @@ contains
         call write_answer(unit, "ecrit.mcnamara_young_k", real_str(k_my, fit_digits), "-", &
             "-", "-", "K of p = K (-ln(1 - e_c))/(1 - e_c), McNamara and Young's scaling, "// &
             "least squares through the origin over the same rows")
-        call close_table(unit, stat, msg)
-        call stop_unless_written(stat, msg)
+        call close_tables([unit])
     end subroutine write_answers
 
     !> The rate-map answer of row p, with the closed form `check` if given.

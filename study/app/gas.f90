@@ -15,9 +15,9 @@ program c12_gas
     use sphere_row_gas, only: gas_state
     use sphere_row_gas_study, only: gas_watch_t, ring_gas, haff_t0
     use sphere_row_ring_dp, only: ring_run
-    use sphere_row_tables, only: open_table, close_table, write_answer, answer_header, tab
+    use sphere_row_tables, only: open_table, write_answer, answer_header, tab
     use sphere_row_study_cli, only: cli_t, start_program, read_keys, stop_unless_normal, &
-        stop_unless_written, say
+        close_tables, say
     implicit none
     character(len=*), parameter :: nl = new_line("a")
     type(cli_t) :: cli
@@ -84,12 +84,7 @@ program c12_gas
     do j = 1, size(es)
         call one_restitution(es(j))
     end do
-    call close_table(unit, stat, msg)
-    call stop_unless_written(stat, msg)
-    call close_table(unit_answers, stat, msg)
-    call stop_unless_written(stat, msg)
-    call close_table(unit_time, stat, msg)
-    call stop_unless_written(stat, msg)
+    call close_tables([unit, unit_answers, unit_time])
 contains
 
     !> The gas at restitution e: the engine's run with its samples, the

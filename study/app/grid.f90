@@ -10,9 +10,9 @@ program c12_grid
     use sphere_row, only: qp, scene_t, run_t, scene_init, simulate, str, itoa, real_str, &
         answer_word, status_word, struck_least, short_text
     use sphere_row_survey, only: check_invariants
-    use sphere_row_tables, only: open_table, close_table, tab
+    use sphere_row_tables, only: open_table, tab
     use sphere_row_study_cli, only: cli_t, start_program, read_keys, stop_unless_normal, &
-        stop_unless_written, fail
+        close_tables, fail
     implicit none
     character(len=*), parameter :: nl = new_line("a")
     !> Multiple of the kind's epsilon by which the invariants may miss, and
@@ -83,18 +83,15 @@ program c12_grid
             if (again > 0) call run_again()
         end do
     end do
-    call close_table(unit, stat, msg)
-    call stop_unless_written(stat, msg)
+    call close_tables([unit])
     if (again > 0) then
-        call close_table(unit_again, stat, msg)
-        call stop_unless_written(stat, msg)
+        call close_tables([unit_again])
         write (*, "(a)") "c12-grid: "//itoa(size(ps)*size(es) - disagree)//" agree, "// &
             itoa(disagree)//" differ at vtol times "//short_text(again)
         if (disagree > 0) call fail("c12-grid: "//itoa(disagree)//" rows differ by more "// &
             "than the sum of their bounds at vtol times "//short_text(again))
     end if
-    call close_table(unit_time, stat, msg)
-    call stop_unless_written(stat, msg)
+    call close_tables([unit_time])
 contains
     !> Open the grid's table, its timings and (with `again`) the second runs'.
     subroutine open_tables()

@@ -7,7 +7,7 @@ program c12_methods
         compiler_version, compiler_options
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
     use sphere_row, only: dp, qp, scene_t, status_normal, status_word, str, itoa
-    use sphere_row_tables, only: open_table, close_table, cpu_model, tab, yes_no
+    use sphere_row_tables, only: open_table, cpu_model, tab, yes_no
     use sphere_row_outcome, only: outcome_t, comparison_t, compare_outcomes, classify, &
         category_word
     use sphere_row_methods, only: method_t, new_method, method_run, method_name, method_label, &
@@ -15,7 +15,7 @@ program c12_methods
         method_stepping, stepper_rk8pd, stepper_rkf45, engine_methods, method_time
     use sphere_row_kind_engines, only: kind_info, kind_info_t
     use sphere_row_study_cli, only: cli_t, start_program, read_keys, fail, stop_unless_normal, &
-        stop_unless_written, say
+        close_tables, say
     use sphere_row_bisection, only: bisect
     use sphere_row_method_runs, only: scene_at, reference_run, prepare_method
     implicit none
@@ -198,12 +198,7 @@ contains
                 end if
             end do
         end do
-        call close_table(unit, stat, msg)
-        call stop_unless_written(stat, msg)
-        call close_table(unit_time, stat, msg)
-        call stop_unless_written(stat, msg)
-        call close_table(unit_cost, stat, msg)
-        call stop_unless_written(stat, msg)
+        call close_tables([unit, unit_time, unit_cost])
     end subroutine work_precision
 
     !> The directory of the machine's measurements: `out`/timing.
@@ -280,8 +275,7 @@ contains
                     //status_word(status_ref(j))
             end do
         end do
-        call close_table(unit, stat, msg)
-        call stop_unless_written(stat, msg)
+        call close_tables([unit])
     end subroutine stability
 
     !> methods_min_distance.tsv: for each precision of the engine (and of the
@@ -343,8 +337,7 @@ contains
                 //str(merge(10.0_qp**right_log(m), nan, k_right(m) > 0 .and. reliable(m))) &
                 //tab//str(10.0_qp**(-ref_limit))
         end do
-        call close_table(unit, stat, msg)
-        call stop_unless_written(stat, msg)
+        call close_tables([unit])
     end subroutine min_distance
 
     !> Whether the method `tested` misses the reference's collision sequence
@@ -398,8 +391,7 @@ contains
         write (unit, "(a)") "batches"//tab//itoa(repeats)
         write (unit, "(a)") "min_time[s]"//tab//str(real(min_time, dp))
         write (unit, "(a)") "stepping_max_steps"//tab//itoa(max_steps)
-        call close_table(unit, stat, msg)
-        call stop_unless_written(stat, msg)
+        call close_tables([unit])
     end subroutine platform
 
 end program c12_methods

@@ -2,10 +2,10 @@
 !> (every answer with its cross-check, how it was obtained, the figures), made
 !> from the per-task answer tables.
 program c12_summary
-    use sphere_row_tables, only: open_table, close_table, tab, split_tabs
+    use sphere_row_tables, only: open_table, tab, split_tabs
     use sphere_row, only: qp, short_text
     use sphere_row_study_cli, only: cli_t, start_program, read_keys, fail, stop_unless_normal, &
-        stop_unless_written
+        close_tables
     implicit none
     character(len=*), parameter :: nl = new_line("a")
     character(len=*), parameter :: tasks(8) = ["a1      ", "a2      ", "b1      ", &
@@ -30,8 +30,7 @@ program c12_summary
     call sections_b()
     call sections_c()
     call sections_beyond()
-    call close_table(md, stat, msg)
-    call stop_unless_written(stat, msg)
+    call close_tables([md])
 
 contains
 
@@ -190,8 +189,7 @@ contains
         do i = 1, size(tasks)
             call answer_rows(trim(tasks(i)), "table")
         end do
-        call close_table(answers, stat, msg)
-        call stop_unless_written(stat, msg)
+        call close_tables([answers])
     end subroutine write_overview
 
     !> Every task's answer table must be there.

@@ -89,14 +89,10 @@ contains
         real(c_double) :: t, t0, h, t_lo, t_hi, t_mid, horizon
         real(dp) :: length, time_scale, tv, t_tol
         integer :: p, n, events_max, k, code
-        logical :: keep
 
-        keep = .false.
-        if (present(record)) keep = record
-        call outcome_start(out, scene%p, keep)
-        call scene_check(scene, code, out%message)
-        out%status = code
-        if (code /= status_normal) return
+        call outcome_start(out, scene%p, record)
+        call scene_check(scene, out%status, out%message)
+        if (out%status /= status_normal) return
         if (.not. (tol > 0.0_dp .and. tol < 1.0_dp)) then
             out%status = status_invalid
             write (out%message, "(a, es10.3, a)") "tol = ", tol, ": allowed 0 < tol < 1"

@@ -78,12 +78,15 @@ module sphere_row_outcome
 contains
 
     !> Prepare `out` for a run of p spheres, keeping its arrays when p is the
-    !> same as before, so that timing loops do not allocate.
+    !> same as before, so that timing loops do not allocate; `record` (absent:
+    !> false, as in every method's own optional argument) asks for every
+    !> collision.
     pure subroutine outcome_start(out, p, record)
         type(outcome_t), intent(inout) :: out
         integer, intent(in) :: p
-        logical, intent(in) :: record
+        logical, intent(in), optional :: record
         integer, parameter :: first_capacity = 64
+        logical :: keep
         if (allocated(out%v)) then
             if (size(out%v) /= p) deallocate (out%v, out%y)
         end if
@@ -96,8 +99,10 @@ contains
         out%min_gap = 0.0_qp
         out%v = 0.0_qp
         out%y = 0.0_qp
-        out%recording = record
-        if (record .and. .not. allocated(out%t)) then
+        keep = .false.
+        if (present(record)) keep = record
+        out%recording = keep
+        if (keep .and. .not. allocated(out%t)) then
             allocate (out%t(first_capacity), out%pair(first_capacity))
         end if
     end subroutine outcome_start

@@ -61,6 +61,7 @@ contains
         type(secant_result_t), intent(out) :: result
         real(qp) :: xa, xb, fa, fb, xc
         integer :: k
+        logical :: done
 
         allocate (result%xs(0:max_iterations + 1), result%fs(0:max_iterations + 1))
         result%xs = 0.0_qp
@@ -72,14 +73,10 @@ contains
         xb = x1
         fa = f(xa)
         fb = f(xb)
-        result%xs(0:1) = [xa, xb]
-        result%fs(0:1) = [fa, fb]
-        result%x = xb
-        result%f = fb
-        if (abs(fb) <= f_tol) then
-            result%status = secant_converged
-            return
-        end if
+        result%xs(0) = xa
+        result%fs(0) = fa
+        call take(0, done)
+        if (done) return
         do k = 1, max_iterations
             if (abs(fb - fa) <= slope_tol*max(abs(fa), abs(fb))) then
                 result%status = secant_flat
@@ -95,20 +92,27 @@ contains
             xb = xc
             fb = f(xb)
             result%iterations = k
-            result%xs(k + 1) = xb
-            result%fs(k + 1) = fb
-            result%x = xb
-            result%f = fb
-            if (abs(fb) <= f_tol) then
-                result%status = secant_converged
-                return
-            end if
+            call take(k, done)
+            if (done) return
             if (abs(xb - xa) <= 4*epsilon(xb)*abs(xb)) then
                 result%status = secant_stagnated
                 return
             end if
         end do
         result%status = secant_max_iterations
+    contains
+        !> Record xb, fb as the iterate after step k (x1 after step 0) and the
+        !> answer so far; done, with the status converged, if |fb| <= f_tol.
+        subroutine take(k, done)
+            integer, intent(in) :: k
+            logical, intent(out) :: done
+            result%xs(k + 1) = xb
+            result%fs(k + 1) = fb
+            result%x = xb
+            result%f = fb
+            done = abs(fb) <= f_tol
+            if (done) result%status = secant_converged
+        end subroutine take
     end subroutine secant
 
     !> The word printed for a secant status.

@@ -44,14 +44,11 @@ contains
         real(dp) :: dx1, tv, t, min_gap
         integer(int64) :: steps, steps_max
         integer :: p, i, code
-        logical :: keep, hit, closing
+        logical :: hit, closing
 
-        keep = .false.
-        if (present(record)) keep = record
-        call outcome_start(out, scene%p, keep)
-        call scene_check(scene, code, out%message)
-        out%status = code
-        if (code /= status_normal) return
+        call outcome_start(out, scene%p, record)
+        call scene_check(scene, out%status, out%message)
+        if (out%status /= status_normal) return
         if (.not. (h > 0.0_dp .and. h <= huge(1.0_dp))) then
             out%status = status_invalid
             out%message = "h: allowed a finite step h > 0"

@@ -19,12 +19,12 @@ module sphere_row_study_cli
     use sphere_row_cli, only: cli_t, read_command_line, fail_with => fail
     use sphere_row_scene_keys, only: scene_from_cli, add_scene_keys
     use sphere_row_error, only: error_t, fatal_error, error_output
-    use sphere_row_tables, only: discard_tables, report_tables
+    use sphere_row_tables, only: discard_tables, report_tables, close_table
     use sphere_row_system, only: text_out_t
     implicit none
     private
     public :: cli_t, add_scene_keys, start_program, read_keys, fail, stop_unless_normal, &
-        stop_unless_written
+        stop_unless_written, close_tables
     public :: add_precision_key, precision_is_auto, say
 
     !> The running program's name, the prefix of its messages.
@@ -143,5 +143,18 @@ contains
         call fatal_error(error, trim(msg), error_output)
         call fail_error(error)
     end subroutine stop_unless_written
+
+    !> Close the tables of `units` in order (close_table), each given its
+    !> name; the first that did not reach the disk stops the program with its
+    !> message, as stop_unless_written does, the ones after it left unnamed.
+    subroutine close_tables(units)
+        integer, intent(in) :: units(:)
+        integer :: i, stat
+        character(len=1000) :: msg
+        do i = 1, size(units)
+            call close_table(units(i), stat, msg)
+            call stop_unless_written(stat, msg)
+        end do
+    end subroutine close_tables
 
 end module sphere_row_study_cli

@@ -1,5 +1,6 @@
 !> A small test harness: tests are `subroutine test_x(error)`, collected into
-!> suites; the driver runs them all and ends with `N passed, N failed`.
+!> suites; the driver hands its suites to `run_suites`, which runs them all and
+!> ends with `N passed, N failed`.
 !>
 !> Each test's line gives its wall time (`make test-times` tabulates them). The
 !> driver's command line may hold `long`: the deep versions of the property
@@ -12,6 +13,7 @@ module testsuite
     implicit none
     private
     public :: error_t, unittest_t, test_proc, new_unittest, check, run_tests
+    public :: suite_t, new_suite, run_suites
     public :: read_text, count_lines, seed_random, read_test_options, long_tests, cases
 
     !> True when the driver was asked for the deep versions of the tests.
@@ -41,7 +43,41 @@ module testsuite
         procedure(test_proc), pointer, nopass :: test => null()
     end type unittest_t
 
+    !> A named suite: one test module's collection.
+    type :: suite_t
+        !> The suite's name, the prefix of its tests' lines.
+        character(len=:), allocatable :: name
+        !> Its tests, in the order they run.
+        type(unittest_t), allocatable :: tests(:)
+    end type suite_t
+
 contains
+
+    !> Pair a suite's name with its collection of tests.
+    function new_suite(name, tests) result(suite)
+        character(len=*), intent(in) :: name
+        type(unittest_t), intent(in) :: tests(:)
+        type(suite_t) :: suite
+        suite%name = name
+        suite%tests = tests
+    end function new_suite
+
+    !> The whole of a test driver after its list of suites: read the command
+    !> line (read_test_options), run every suite in order, print the last line
+    !> `N passed, N failed` (the line the Makefile and tools read) and end the
+    !> program with status 1 if any test failed, so that `fpm test` fails.
+    subroutine run_suites(suites)
+        type(suite_t), intent(in) :: suites(:)
+        integer :: passed, failed, i
+        passed = 0
+        failed = 0
+        call read_test_options(failed)
+        do i = 1, size(suites)
+            call run_tests(suites(i)%name, suites(i)%tests, passed, failed)
+        end do
+        write (output_unit, "(i0, ' passed, ', i0, ' failed')") passed, failed
+        if (failed > 0) stop 1, quiet=.true.
+    end subroutine run_suites
 
     !> Pair a name with a test procedure.
     function new_unittest(name, test) result(unit)
