@@ -29,14 +29,6 @@ contains
             ]
     end function collect_proofs
 
-    !> A case of the table.
-    pure function edge_case(why, keys) result(row)
-        character(len=*), intent(in) :: why, keys
-        type(case_t) :: row
-        row%why = why
-        row%keys = keys
-    end function edge_case
-
     !> Scenes at the edge of a rule's conditions, each run with the rules and
     !> with the fallback alone: the same velocities within the two bounds.
     subroutine test_declines(error)
@@ -49,18 +41,18 @@ contains
             ! sphere 41, which touches the last, light, sphere 42, so the
             ! cascade runs on into it at the same instant (absorbed first,
             ! sphere 42 would leave at 0.0333 instead of 0.0256)
-            edge_case("a struck block's striker touching a light last sphere", &
+            case_t("a struck block's striker touching a light last sphere", &
                 "p=42 e=0.5 masses="//list("1", 41)//",0.1 gaps="//list("1", 40)//",0"), &
             ! the same, turned round: sphere 42 strikes the row to its left,
             ! its block struck at its rear by sphere 2, which touches the
             ! light sphere 1 (the gap beside the cascade on its left closed)
-            edge_case("a block struck at its rear by a sphere touching a light first one", &
+            case_t("a block struck at its rear by a sphere touching a light first one", &
                 "p=42 e=0.5 masses=0.1,"//list("1", 41)//" gaps=0,"//list("1", 40) &
                 //" velocities="//list("0", 41)//",-1"), &
             ! a block absorbs only a sphere of its own mass: the block of 41
             ! moving left strikes a light sphere 1 at rest, which leaves
             ! faster than the block instead of joining it
-            edge_case("a block striking a light sphere", &
+            case_t("a block striking a light sphere", &
                 "p=42 e=0.5 masses=0.1,"//list("1", 41)//" velocities="//list("0", 41)//",-1") &
             ]
         do i = 1, size(cases)
