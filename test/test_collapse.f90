@@ -7,8 +7,9 @@ module test_collapse
         itoa, answer_exact, answer_certified, answer_tolerance, answer_bounded, collapse_proven, &
         answer_unresolved, answer_word, struck_least
     use sphere_row_cascade, only: cascade_jump
-    use testsuite, only: error_t, unittest_t, new_unittest, check, seed_random, cases
-    use test_support, only: scene_of, random_row
+    use testsuite, only: error_t, unittest_t, new_unittest, check, seed_random, cases, &
+        read_text
+    use test_support, only: scene_of, split_tabs, random_row
     implicit none
     private
     public :: collect_collapse
@@ -1004,157 +1005,15 @@ contains
 
     !> Survey rows (and rows like them) that end in merged blocks, each
     !> within its budget, run by the scan and by the calendar
-    !> (check_row_merges): each row names what it shows, and why it is here.
+    !> (check_row_merges): each row of test/merging_rows.tsv names what it
+    !> shows, and why it is here.
     subroutine test_merging_rows(error)
         type(error_t), allocatable, intent(out) :: error
         type(merging_t), allocatable :: rows(:)
         type(scene_t) :: scene
         integer :: i
-        rows = [ &
-            ! A row of heavy and light spheres, two runs of them touching (survey row
-            ! 346): the box of ratios proves its blocks merge only over the
-            ! collisions the engine's order at equal times can choose, not in every
-            ! order. With that proof it ends within 100 collisions, all fifteen
-            ! spheres at the mean velocity m1 v0/sum(m), by the scan and by the
-            ! calendar (without it the engine stepped 428,048 collisions, to the
-            ! same velocities within 2e-34).
-            merging("touching block in the engine's order", 100, .true., .true., &
-                "p=15 e=0.003709845244884490966796875 " // &
-                "masses=0.13536122608110779005291202298197616," // &
-                "0.11831054596059376767302298886169143," // &
-                "0.01057420493754314525753277090820565," // &
-                "40.232631256582536422306283563736336," // &
-                "0.9796077434281979111323641027742356," // &
-                "0.23179258858393702237413343400802526," // &
-                "0.65818720923290397496605820024264,216.74155763328987733368323668134387," // &
-                "130.8612844158687474007286114344233," // &
-                "0.00871191957213879878910863054974617," // &
-                "5.761952033271788179603141502429122,55.63049621700305159345780051514636," // &
-                "0.0017209402012910136660835421488644955," // &
-                "0.00359290067955444187678005091451435," // &
-                "621.6160970944672248469381518247909 " // &
-                "gaps=0.513140504248440265655517578125,0,0,0,0,0,0," // &
-                "0.1330031114630401134490966796875,0,0,0,0," // &
-                "1.8113962151110172271728515625,0.72596852295100688934326171875"), &
-            ! Survey row 206 (p = 9, masses from 0.0018 to 179): light spheres between
-            ! heavy ones in touching blocks, whose cascades at one instant take 10^5
-            ! collisions and more to fall a decade and merge only where their rates
-            ! are insignificant. The try that runs such a cascade ahead in double
-            ! precision gets twice the work of the try before it that ran out, so
-            ! a later try runs it to its end: 19 limits within 10^5 collisions,
-            ! where tries of one size left the row at 10^6; every sphere ends at
-            ! m_1 v_0/sum(m).
-            merging("slow cascade", 100000, .false., .true., &
-                "p=9 e=0.32719548163004219532012939453125 " // &
-                "masses=79.048240118539401020923363880641," // &
-                "0.1452839848691076824046094966937285," // &
-                "0.006321457321880335850584206155236092," // &
-                "0.3106138716714262627003121726980677," // &
-                "0.0054881741409882437502546843960781215," // &
-                "0.0018339321722735989284370707500668797," // &
-                "0.09142095068272680720856867929485365," // &
-                "79.9077606797219458829743411430299,179.26053845981244476201457079690335 " // &
-                "gaps=1.8878040867857635021209716796875," // &
-                "0.9105529659427702426910400390625,0.8356126849539577960968017578125," // &
-                "0.4395392495207488536834716796875,1.404487765394151210784912109375," // &
-                "0.0931094367988407611846923828125,1.9548409809358417987823486328125," // &
-                "1.1849128655157983303070068359375"), &
-            ! Survey row 611 (p = 8, masses from 0.0041 to 84): a touching block
-            ! struck again and again while the collisions around it accumulate,
-            ! each strike's cascade proven to merge by a try; the light spheres
-            ! beside it shuttle on in gaps below tol (not contacts) until their rates
-            ! are below tol too and the fallback takes them, at tolerance. The
-            ! engine waits less after a try that merged than after one that did
-            ! not: the row ends within 20,000 collisions (12,255, with 1,841 limits
-            ! proven); every sphere ends at m_1 v_0/sum(m).
-            merging("block struck again and again", 20000, .false., .true., &
-                "p=8 e=0.7235887139104306697845458984375 " // &
-                "masses=84.2225754518696328446196530753553," // &
-                "1.2470008848200654775135824565122673," // &
-                "53.822995588930203228747057040036944," // &
-                "0.1984773708827939034255869074874105," // &
-                "0.267053330167783381661119029270176," // &
-                "45.541307032956864151567802911176224," // &
-                "0.004071396051488634706363605452575331," // &
-                "0.5441525572792555571998111448202732 gaps=0," // &
-                "0.6683402056805789470672607421875,1.6220443584024906158447265625," // &
-                "0.5771956783719360828399658203125,0.154092319309711456298828125," // &
-                "1.5614892640151083469390869140625,1.15029406361281871795654296875"), &
-            ! Survey row 849 (p = 11, masses from 0.0066 to 514): a try of spheres
-            ! 1..5 runs out of work at collision 299, and spheres 6..11, struck,
-            ! start a cascade that a try proves to merge. A block's wait after its
-            ! try does not hold back the try of another block: the row ends within
-            ! 20,000 collisions (11,696: its light spheres then shuttle in gaps below
-            ! tol until the fallback takes them; with one wait for every block, the
-            ! try of 6..11 came only after the 65,536 collisions of that wait),
-            ! momentum kept and no pair closing, by the scan and by the calendar.
-            merging("other block", 20000, .false., .false., &
-                "p=11 e=0.616398501209914684295654296875 " // &
-                "masses=1.5242985519090533553545859966592126," // &
-                "0.05349623918334792556377297082652699," // &
-                "0.24055060901275235820877548645329352," // &
-                "513.960850572897814374317280643397,105.85733904882934288600259506825749," // &
-                "362.1551682619556386830936208704375," // &
-                "0.1912721895387610396298032531415859," // &
-                "1.3049340809432839459640274620191383," // &
-                "0.006629293625092055190649798905934446," // &
-                "44.30901419187568626760481701229255,69.93804131817065415559862380903653 " // &
-                "gaps=0.2680184864439070224761962890625," // &
-                "1.3540451661683619022369384765625,1.153760363347828388214111328125," // &
-                "1.2885074033401906490325927734375,0,0.8046814664267003536224365234375," // &
-                "0.1088909055106341838836669921875,0,0.767450160346925258636474609375," // &
-                "1.8842644342221319675445556640625"), &
-            ! A row of heavy spheres (164.6) with light ones (0.0047) between them:
-            ! a try of the touching row finds its cascade's pattern (418 entries),
-            ! whose choices are near ties (relative margin 3.5e-10), and the drift
-            ! of the direction that real64 can resolve, its rounding (1.0e-11 for
-            ! that pattern), is above a hundredth of that margin. Checked again in
-            ! the finer kind (real80, or real128 without it) from the same rates,
-            ! the drift falls by 0.4 a period to 3.9e-15 and the certificate holds:
-            ! the row ends within 200 collisions (44), every limit in closed form
-            ! and every sphere at m1 v0/sum(m), by the scan and by the calendar.
-            ! With the certificate in real64 alone it was still going at 10^6
-            ! collisions.
-            merging("pattern certified in a finer kind", 200, .true., .true., &
-                "p=7 e=0.14619706240297226 masses=164.55252121945628," // &
-                "0.004659395143187676,164.55252121945628,0.004659395143187676," // &
-                "164.55252121945628,164.55252121945628,1.6453271842727595 gaps=0," // &
-                "1.742837971828052,1.4047484132916612,0,0.7394772920734354,0"), &
-            ! Survey row 370 (p = 15, e = 0.811, masses 0.0020 to 585): a block merged
-            ! by a limit is struck again and again at its right end (184 limits of
-            ! spheres 6..11, then 179 of 6..14). Each strike finds the block at rest
-            ! within itself, its rates all 0 but the struck contact's, so its
-            ! cascade is the one of the strike before up to its scale, and the first
-            ! try's proof of its merge stands for every later strike. The light
-            ! sphere beyond the block shuttles in gaps below tol (not contacts)
-            ! until the fallback takes it, at tolerance: the row ends within 300,000
-            ! collisions (239,140, with 119,373 limits proven), momentum kept and
-            ! no pair closing, by the scan and by the calendar. Stepping each
-            ! strike's cascade until a try came due, and that try waiting 1/64 of
-            ! the last one's work, it was still going at 10^6.
-            merging("block struck at rest within itself", 300000, .false., .false., &
-                "p=15 e=0.81104636169038712978363037109375 " // &
-                "masses=2.981897446451268578437434889684477," // &
-                "0.006417109208483864909276642094774339," // &
-                "0.024067622489022670178320856793732582," // &
-                "0.0020011583739740145015132382368497846," // &
-                "163.04161417179457909400029199227823," // &
-                "210.11158815829589477772296782360213," // &
-                "0.0028420989330048073808285782226200483," // &
-                "0.8639172289110307004131200767941455," // &
-                "0.41958619952568144071096728026661023," // &
-                "545.634310926784475501200194778833," // &
-                "0.006902180664373836458293852021486001," // &
-                "5.512654616888185576193729352028292,584.9439177013239394971573263548163," // &
-                "0.012198929705831733628203335181087598," // &
-                "170.94699773505405770422155684861786 gaps=0,0," // &
-                "0.280552188865840435028076171875,0,0.330936086364090442657470703125," // &
-                "0.162342214025557041168212890625,1.206049461849033832550048828125," // &
-                "1.2656581248156726360321044921875,1.9136783699505031108856201171875," // &
-                "0.860124523751437664031982421875,0.5570084783248603343963623046875," // &
-                "0.921351038850843906402587890625,0.16385924816131591796875," // &
-                "0.605546773411333560943603515625") &
-            ]
+        call merging_rows(rows, error)
+        if (allocated(error)) return
         do i = 1, size(rows)
             call scene_of(rows(i)%keys, scene, error)
             if (allocated(error)) return
@@ -1163,6 +1022,36 @@ contains
             if (allocated(error)) return
         end do
     end subroutine test_merging_rows
+
+    !> The rows of test_merging_rows, from test/merging_rows.tsv: a line each
+    !> with what it shows, its budget, whether every limit must be in closed
+    !> form, whether it ends as one block, its scene as sphere-row takes it and
+    !> why it is there.
+    subroutine merging_rows(rows, error)
+        type(merging_t), allocatable, intent(out) :: rows(:)
+        type(error_t), allocatable, intent(out) :: error
+        character(len=:), allocatable :: text, fields(:)
+        integer :: at, most, ios
+        allocate (rows(0))
+        text = read_text("test/merging_rows.tsv")
+        ! (the header line first)
+        at = index(text, new_line("a"))
+        text = text(at + 1:)
+        do while (len(text) > 0)
+            at = index(text, new_line("a"))
+            call split_tabs(text(:at - 1), fields)
+            text = text(at + 1:)
+            call check(error, size(fields) == 6, "merging_rows.tsv: a line of " &
+                //itoa(size(fields))//" fields, not 6")
+            if (allocated(error)) return
+            read (fields(2), *, iostat=ios) most
+            call check(error, ios == 0, "merging_rows.tsv: budget "//trim(fields(2)))
+            if (allocated(error)) return
+            rows = [rows, merging(trim(fields(1)), most, fields(3) == "true", &
+                fields(4) == "true", trim(fields(5)))]
+        end do
+        call check(error, size(rows) >= 6, "merging_rows.tsv: "//itoa(size(rows))//" rows")
+    end subroutine merging_rows
 
     !> A row of the table of rows that end in merged blocks.
     pure function merging(what, most, closed_only, one_block, keys) result(row)

@@ -42,6 +42,7 @@ module sphere_row_cli
         file_origin
     use sphere_row_system, only: text_out_t, launcher_rank
     use sphere_row_help, only: wrapped, help_width, key_lines, input_rules
+    use sphere_row_args, only: string_t, check_split, edit_distance
     implicit none
     private
     public :: cli_t, string_t, read_command_line, fail, command_args, wrapped, help_width
@@ -50,11 +51,6 @@ module sphere_row_cli
 
     character(len=*), parameter :: nl = new_line("a")
 
-    !> A string of its own length (command-line arguments keep trailing blanks).
-    type :: string_t
-        !> The text.
-        character(len=:), allocatable :: s
-    end type string_t
 
     !> A program's command line: its keys and the text of its `--help`.
     type :: cli_t
@@ -394,96 +390,6 @@ contains
         end associate
     end subroutine take_argument
 
-    !> Refuse `key = value` written with blanks around `=`: the shell hands
-    !> it over as two or three arguments (`e`, `=`, `0.5`), of which the
-    !> bare key would be read as a scene file, so the refusal says what the
-    !> blanks did and the one argument meant. So too a list written with
-    !> blanks after or before its commas (`masses=1, 2, 3, 4`: `masses=1,`,
-    !> `2,`, `3,`, `4`), which would be refused as an empty value 2.
-    subroutine check_split(args, error)
-        type(string_t), intent(in) :: args(:)
-        type(error_t), allocatable, intent(out) :: error
-        character(len=:), allocatable :: shown, meant, blanks
-        integer :: i, n, last
-        logical :: around, listed
-        n = size(args)
-        do i = 1, n - 1
-            ! the arguments i..last are the pieces of one; around: split at '='
-            around = .true.
-            last = i + 1
-            associate (a => args(i)%s, b => args(i + 1)%s)
-                if (b == "=" .and. len(b) == 1 .and. index(a, "=") == 0 .and. len(a) > 0) then
-                    ! key = value (three arguments), or key = at the end
-                    shown = a//" ="
-                    meant = a//"="
-                    if (i + 2 <= n) then
-                        shown = shown//" "//args(i + 2)%s
-                        meant = meant//args(i + 2)%s
-                        last = i + 2
-                    end if
-                else if (len(a) > 1 .and. index(a, "=") == len(a) .and. index(b, "=") == 0) then
-                    ! key= value
-                    shown = a//" "//b
-                    meant = a//b
-                else if (len(b) > 1 .and. index(b, "=") == 1 .and. index(a, "=") == 0 .and. &
-                         len(a) > 0) then
-                    ! key =value
-                    shown = a//" "//b
-                    meant = a//b
-                else if (index(a, "=") > 1) then
-                    ! key=value, whose list may go on in the next arguments
-                    shown = a
-                    meant = a
-                    around = .false.
-                    last = i
-                else
-                    cycle
-                end if
-            end associate
-            listed = .false.
-            do while (last < n)
-                if (.not. list_goes_on(meant, args(last + 1)%s)) exit
-                shown = shown//" "//args(last + 1)%s
-                meant = meant//args(last + 1)%s
-                last = last + 1
-                listed = .true.
-            end do
-            if (.not. (around .or. listed)) cycle
-            if (around .and. listed) then
-                blanks = "the blanks around '=' and in the list"
-            else if (around) then
-                blanks = "the blanks around '='"
-            else
-                blanks = "the blanks in the list"
-            end if
-            call fatal_error(error, "argument '"//printable(shown)//"': "//blanks &
-                //" split it into "//itoa(count_words(shown))//" arguments; allowed " &
-                //"key=value as one argument: "//printable(meant))
-            return
-        end do
-    contains
-        pure integer function count_words(text)
-            character(len=*), intent(in) :: text
-            integer :: j
-            count_words = 1
-            do j = 1, len(text)
-                if (text(j:j) == " ") count_words = count_words + 1
-            end do
-        end function count_words
-
-        !> `next` is the rest of the list that `text` (key=value) begins: it
-        !> ends in a comma or `next` begins with one, and `next` is an entry
-        !> of a list (it begins as a number or a comma and holds no '=').
-        pure logical function list_goes_on(text, next)
-            character(len=*), intent(in) :: text, next
-            list_goes_on = .false.
-            if (len(next) == 0 .or. len(text) == 0) return
-            if (index(next, "=") > 0 .or. next == "-") return
-            if (scan(next(1:1), "0123456789+-.,") == 0) return
-            list_goes_on = text(len(text):) == "," .or. next(1:1) == ","
-        end function list_goes_on
-    end subroutine check_split
-
     !> " (did you mean NAME?)" for the key of `cli` (only those a file may
     !> set, with `in_file`) nearest to an unknown `name`: the same letters
     !> in another case, or in names of three letters and more one letter
@@ -512,32 +418,6 @@ contains
         end do
         if (best > 0) text = " (did you mean "//cli%keys(best)%name//"?)"
     end function did_you_mean
-
-    !> The optimal string alignment distance of a and b: letters changed,
-    !> left out, added or two neighbours swapped, each counting one.
-    pure integer function edit_distance(a, b) result(dist)
-        character(len=*), intent(in) :: a, b
-        integer :: d(0:len(a), 0:len(b))
-        integer :: i, j, cost
-        do i = 0, len(a)
-            d(i, 0) = i
-        end do
-        do j = 0, len(b)
-            d(0, j) = j
-        end do
-        do j = 1, len(b)
-            do i = 1, len(a)
-                cost = merge(0, 1, a(i:i) == b(j:j))
-                d(i, j) = min(d(i - 1, j) + 1, d(i, j - 1) + 1, d(i - 1, j - 1) + cost)
-                if (i > 1 .and. j > 1) then
-                    if (a(i:i) == b(j - 1:j - 1) .and. a(i - 1:i - 1) == b(j:j)) then
-                        d(i, j) = min(d(i, j), d(i - 2, j - 2) + 1)
-                    end if
-                end if
-            end do
-        end do
-        dist = d(len(a), len(b))
-    end function edit_distance
 
     !> Refuse a key given together with a key it overrides.
     subroutine check_overrides(cli, error)

@@ -200,9 +200,7 @@ contains
             e_wall, ring, t_max
         type(error_t), allocatable, intent(out) :: error
         character(len=:), allocatable :: gas, path
-        real(qp), allocatable :: free(:)
         integer :: i
-        logical :: ok
         character(len=*), parameter :: placed(*) = [character(len=10) :: "p", "gaps", "a", &
             "masses", "velocities", "v0"], gas_set(*) = [character(len=10) :: "gaps", "a", &
             "velocities", "v0", "ring", "wall_left", "wall_right", "spheres"], &
@@ -270,9 +268,32 @@ contains
                 return
             end if
         end if
-        if (gas == "no") return
+        if (gas /= "no") call gas_from_cli(cli, gas == "ring", p, masses, gaps, velocities, &
+            wall_left, wall_right, ring, error)
+    contains
+        !> Keys a and b given together, refused.
+        subroutine both(a, b, why)
+            character(len=*), intent(in) :: a, b, why
+            call fatal_error(error, a//" = "//printable(cli%get_text(a))//" with "//b//" = " &
+                //printable(cli%get_text(b))//": allowed one of them ("//why//")")
+        end subroutine both
+    end subroutine state_from_cli
+
+    !> The random gas of p spheres (gas_state): on a ring (its gaps, the seam's
+    !> among them) or in a box (its walls' gaps), velocities drawn for the
+    !> masses given (1 each if none).
+    subroutine gas_from_cli(cli, on_ring, p, masses, gaps, velocities, wall_left, &
+            wall_right, ring, error)
+        type(cli_t), intent(in) :: cli
+        logical, intent(in) :: on_ring
+        integer, intent(in) :: p
+        real(qp), allocatable, intent(inout) :: masses(:), gaps(:), velocities(:), &
+            wall_left, wall_right, ring
+        type(error_t), allocatable, intent(out) :: error
+        real(qp), allocatable :: free(:)
+        logical :: ok
         if (.not. allocated(masses)) allocate (masses(p), source=1.0_qp)
-        allocate (velocities(p), free(merge(p, p + 1, gas == "ring")))
+        allocate (velocities(p), free(merge(p, p + 1, on_ring)))
         call gas_state(p, cli%get_real("d"), masses, cli%get_real("density"), &
             cli%get_real("temperature"), int(cli%get_int("seed"), int64), free, &
             velocities, ok)
@@ -282,7 +303,7 @@ contains
                 //"density d < 1")
             return
         end if
-        if (gas == "ring") then
+        if (on_ring) then
             gaps = free(:p - 1)
             ring = free(p)
         else
@@ -290,14 +311,7 @@ contains
             gaps = free(2:p)
             wall_right = free(p + 1)
         end if
-    contains
-        !> Keys a and b given together, refused.
-        subroutine both(a, b, why)
-            character(len=*), intent(in) :: a, b, why
-            call fatal_error(error, a//" = "//printable(cli%get_text(a))//" with "//b//" = " &
-                //printable(cli%get_text(b))//": allowed one of them ("//why//")")
-        end subroutine both
-    end subroutine state_from_cli
+    end subroutine gas_from_cli
 
     !> Refuse a scene that a run in real(8) (precision = dp) cannot carry:
     !> every value not 0 must be a normal real(8) (a subnormal one keeps
