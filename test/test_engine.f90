@@ -2,15 +2,32 @@
 module test_engine
     use sphere_row, only: qp, dp, scene_t, run_t, event_log_t, scene_init, simulate, &
         kinetic_energy, momentum, status_normal, status_collapsed, status_invalid, &
-        event_collision, event_collapse, str
+        event_collision, event_collapse, str, itoa
     use sphere_row, only: scene_dp_t, run_dp_t
     use testsuite, only: error_t, unittest_t, new_unittest, check, seed_random
+    use test_support, only: scene_of
     implicit none
     private
     public :: collect_engine
 
     !> Unit roundoff of the working precision, the scale of every tolerance here.
     real(qp), parameter :: eps = epsilon(1.0_qp)
+
+    !> A scaling law of the row: the scene `scaled` (key=value words) runs as
+    !> `original` with every time multiplied by time_factor and every velocity
+    !> by speed_factor.
+    type :: scaling_t
+        character(len=16) :: what
+        character(len=32) :: original, scaled
+        real(qp) :: time_factor, speed_factor
+    end type scaling_t
+
+    !> The scaling laws tested: lengths (gaps and d doubled), speed (v0 doubled).
+    type(scaling_t), parameter :: scalings(2) = [ &
+        scaling_t("scaled lengths", "e=0.3 gaps=1,0.7,1.3 d=0.4", "e=0.3 gaps=2,1.4,2.6 d=0.8", &
+        2.0_qp, 1.0_qp), &
+        scaling_t("scaled speed", "e=0.25 masses=1,3,2,1", "e=0.25 masses=1,3,2,1 v0=2", &
+        0.5_qp, 2.0_qp)]
 
 contains
 
@@ -224,71 +241,104 @@ contains
     !> e = 1, equal masses: exactly p-1 collisions, all motion in the last sphere.
     subroutine test_elastic_cradle(error)
         type(error_t), allocatable, intent(out) :: error
-        type(scene_t) :: scene
-        type(run_t) :: run
-        integer :: p, stat
-        character(len=200) :: msg
+        integer :: p, i
         do p = 2, 50
-            call scene_init(scene, stat, msg, p=p, e=1.0_qp)
-            call simulate(scene, run)
-            call check(error, run%n == p - 1, "elastic cradle: wrong number of collisions")
-            call check(error, run%status == status_normal, "elastic cradle: status")
-            call check(error, all(abs(run%v(:p - 1)) <= 4*eps) .and. &
-                abs(run%v(p) - 1) <= 4*eps, "elastic cradle: motion not handed on")
+            call check_end(error, "p="//itoa(p)//" e=1", [(0.0_qp, i=1, p - 1), 1.0_qp], &
+                4*eps, n=p - 1, status=status_normal)
         end do
     end subroutine test_elastic_cradle
+
+    !> The scene of `keys` (key=value words) ends with the velocities `v` to
+    !> `tol`, after `n` collisions and with `status` where these are given;
+    !> `run` is its run.
+    subroutine check_end(error, keys, v, tol, n, status, run)
+        type(error_t), allocatable, intent(inout) :: error
+        character(len=*), intent(in) :: keys
+        real(qp), intent(in) :: v(:), tol
+        integer, intent(in), optional :: n, status
+        type(run_t), intent(out), optional :: run
+        type(scene_t) :: scene
+        type(run_t) :: ran
+        if (allocated(error)) return
+        call scene_of(keys, scene, error)
+        if (allocated(error)) return
+        call simulate(scene, ran)
+        if (present(n)) call check(error, ran%n == n, &
+            keys//": "//itoa(ran%n)//" collisions, not "//itoa(n))
+        if (present(status)) call check(error, ran%status == status, &
+            keys//": status "//itoa(ran%status)//", not "//itoa(status))
+        call check(error, size(ran%v) == size(v), keys//": other number of spheres")
+        if (allocated(error)) return
+        call check(error, all(abs(ran%v - v) <= tol), keys//": final velocities not the closed form")
+        if (present(run)) run = ran
+    end subroutine check_end
 
     !> Doubling every gap and the diameter doubles every event time.
     subroutine test_scaling_lengths(error)
         type(error_t), allocatable, intent(out) :: error
-        type(scene_t) :: s1, s2
-        type(run_t) :: r1, r2
-        type(event_log_t) :: l1, l2
-        integer :: stat
-        character(len=200) :: msg
-        real(qp), parameter :: gaps(3) = [1.0_qp, 0.7_qp, 1.3_qp]
-        call scene_init(s1, stat, msg, e=0.3_qp, gaps=gaps, d=0.4_qp)
-        call scene_init(s2, stat, msg, e=0.3_qp, gaps=2*gaps, d=0.8_qp)
-        call simulate(s1, r1, l1)
-        call simulate(s2, r2, l2)
-        call check(error, l1%n == l2%n .and. l1%n > 3, "scaled lengths: other event count")
-        if (allocated(error)) return
-        call check(error, all(abs(l2%t(:l1%n) - 2*l1%t(:l1%n)) <= 16*eps*l2%t(:l1%n)), &
-            "scaled lengths: event times not doubled")
-        call check(error, all(abs(r2%v - r1%v) <= 16*eps), "scaled lengths: velocities changed")
+        call check_scaling(error, scalings(1))
     end subroutine test_scaling_lengths
 
     !> Doubling v0 halves every event time and doubles every velocity.
     subroutine test_scaling_speed(error)
         type(error_t), allocatable, intent(out) :: error
+        call check_scaling(error, scalings(2))
+    end subroutine test_scaling_speed
+
+    !> A scaling law: the scene `law%scaled` has the events of `law%original`,
+    !> more than 3, at time_factor times their times (to 16 eps relative) and
+    !> ends with speed_factor times its velocities (to 16 eps).
+    subroutine check_scaling(error, law)
+        type(error_t), allocatable, intent(out) :: error
+        type(scaling_t), intent(in) :: law
         type(scene_t) :: s1, s2
         type(run_t) :: r1, r2
         type(event_log_t) :: l1, l2
-        integer :: stat
-        character(len=200) :: msg
-        call scene_init(s1, stat, msg, e=0.25_qp, masses=[1.0_qp, 3.0_qp, 2.0_qp, 1.0_qp])
-        call scene_init(s2, stat, msg, e=0.25_qp, masses=[1.0_qp, 3.0_qp, 2.0_qp, 1.0_qp], &
-            v0=2.0_qp)
+        character(len=:), allocatable :: what
+        what = trim(law%what)
+        call scene_of(trim(law%original), s1, error)
+        if (allocated(error)) return
+        call scene_of(trim(law%scaled), s2, error)
+        if (allocated(error)) return
         call simulate(s1, r1, l1)
         call simulate(s2, r2, l2)
-        call check(error, l1%n == l2%n .and. l1%n > 3, "scaled speed: other event count")
+        call check(error, l1%n == l2%n .and. l1%n > 3, what//": other event count")
         if (allocated(error)) return
-        call check(error, all(abs(2*l2%t(:l1%n) - l1%t(:l1%n)) <= 16*eps*l1%t(:l1%n)), &
-            "scaled speed: event times not halved")
-        call check(error, all(abs(r2%v - 2*r1%v) <= 16*eps), "scaled speed: velocities not doubled")
-    end subroutine test_scaling_speed
+        call check(error, all(abs(l2%t(:l1%n) - law%time_factor*l1%t(:l1%n)) <= &
+            16*eps*l2%t(:l1%n)), what//": event times not scaled by "//str(law%time_factor))
+        call check(error, all(abs(r2%v - law%speed_factor*r1%v) <= 16*eps), &
+            what//": velocities not scaled by "//str(law%speed_factor))
+    end subroutine check_scaling
 
     !> Every e in [0, 0.2] on a fine grid ends, in bounded time, normally or
     !> quasi-plastically, with momentum conserved.
     subroutine test_low_e(error)
         type(error_t), allocatable, intent(out) :: error
+        call check_e_grid(error, 0.2_qp, 2000)
+    end subroutine test_low_e
+
+    !> Every e from 0 to 1 ends, and the final rates satisfy the definition's
+    !> termination criterion (no significant closing rate).
+    subroutine test_all_e(error)
+        type(error_t), allocatable, intent(out) :: error
+        call check_e_grid(error, 1.0_qp, 1000)
+    end subroutine test_all_e
+
+    !> The definition's row at e = e_max i/steps, i = 0 ... steps: every run
+    !> ends, normally or quasi-plastically (then with equal velocities), in
+    !> bounded time, with momentum conserved to 1e-30, no closing rate above
+    !> tol v0 and no negative gap.
+    subroutine check_e_grid(error, e_max, steps)
+        type(error_t), allocatable, intent(out) :: error
+        real(qp), intent(in) :: e_max
+        integer, intent(in) :: steps
         type(scene_t) :: scene
         type(run_t) :: run
         integer :: i, stat
         character(len=200) :: msg
         call scene_init(scene, stat, msg)
-        do i = 0, 2000
-            scene%e = 0.2_qp*i/2000
+        do i = 0, steps
+            scene%e = e_max*i/steps
             call simulate(scene, run)
             call check(error, run%status == status_normal .or. run%status == status_collapsed, &
                 "e = "//str(scene%e)//": no end")
@@ -299,41 +349,18 @@ contains
             call check(error, run%status == status_normal .or. &
                 maxval(run%v) - minval(run%v) <= 64*eps, &
                 "e = "//str(scene%e)//": quasi-plastic with unequal velocities")
-        end do
-    end subroutine test_low_e
-
-    !> Every e from 0 to 1 ends, and the final rates satisfy the definition's
-    !> termination criterion (no significant closing rate).
-    subroutine test_all_e(error)
-        type(error_t), allocatable, intent(out) :: error
-        type(scene_t) :: scene
-        type(run_t) :: run
-        integer :: i, stat
-        character(len=200) :: msg
-        call scene_init(scene, stat, msg)
-        do i = 0, 1000
-            scene%e = i/1000.0_qp
-            call simulate(scene, run)
-            call check(error, run%status == status_normal .or. run%status == status_collapsed, &
-                "e = "//str(scene%e)//": no end")
             call check(error, all(run%dy >= -scene%tol*scene%v0), &
                 "e = "//str(scene%e)//": ended with a closing gap")
             call check(error, all(run%y >= 0), "e = "//str(scene%e)//": negative gap")
         end do
-    end subroutine test_all_e
+    end subroutine check_e_grid
 
     !> e = 0: perfectly plastic, every sphere ends with v0/p.
     subroutine test_plastic(error)
         type(error_t), allocatable, intent(out) :: error
-        type(scene_t) :: scene
-        type(run_t) :: run
-        integer :: p, stat
-        character(len=200) :: msg
+        integer :: p, i
         do p = 2, 8
-            call scene_init(scene, stat, msg, p=p, e=0.0_qp)
-            call simulate(scene, run)
-            call check(error, all(abs(run%v - 1.0_qp/p) <= 64*eps), &
-                "e = 0: velocities not v0/p")
+            call check_end(error, "p="//itoa(p)//" e=0", [(1.0_qp/p, i=1, p)], 64*eps)
         end do
     end subroutine test_plastic
 
@@ -344,9 +371,8 @@ contains
         type(error_t), allocatable, intent(out) :: error
         type(scene_t) :: scene
         type(run_t) :: run
-        integer :: stat
-        character(len=200) :: msg
-        call scene_init(scene, stat, msg, e=0.1_qp)
+        call scene_of("e=0.1", scene, error)
+        if (allocated(error)) return
         call simulate(scene, run)
         call check(error, run%status == status_collapsed .and. run%limits%n >= 1, &
             "e = 0.1 not reported as collapsed")
@@ -426,15 +452,11 @@ contains
     !> Touching spheres (all gaps 0), e = 1: the impulse runs through the row at t = 0.
     subroutine test_touching(error)
         type(error_t), allocatable, intent(out) :: error
-        type(scene_t) :: scene
         type(run_t) :: run
-        integer :: stat
-        character(len=200) :: msg
-        call scene_init(scene, stat, msg, p=5, e=1.0_qp, a=0.0_qp)
-        call simulate(scene, run)
-        call check(error, run%n == 4 .and. run%t_end == 0, "touching row: wrong events")
-        call check(error, abs(run%v(5) - 1) <= 4*eps .and. all(abs(run%v(:4)) <= 4*eps), &
-            "touching row: motion not handed on")
+        call check_end(error, "p=5 e=1 a=0", [0.0_qp, 0.0_qp, 0.0_qp, 0.0_qp, 1.0_qp], 4*eps, &
+            n=4, run=run)
+        if (allocated(error)) return
+        call check(error, run%t_end == 0, "touching row: events after t = 0")
     end subroutine test_touching
 
 end module test_engine
