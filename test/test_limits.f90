@@ -19,6 +19,7 @@ module test_limits
     use sphere_row, only: qp, scene_t, run_t, observer_t, scene_init, simulate, str, itoa, &
         event_collision, event_collapse, state_now
     use testsuite, only: error_t, unittest_t, new_unittest, check
+    use test_support, only: scene_of
     implicit none
     private
     public :: collect_limits
@@ -120,30 +121,17 @@ contains
     !> (about 3e-5): v_bound must cover the largest, not the last.
     subroutine test_largest_limit(error)
         type(error_t), allocatable, intent(out) :: error
-        type(scene_t) :: scene
-        type(run_t) :: run
         type(pooling_watch_t) :: watch
-        integer :: stat, big
-        character(len=200) :: msg
-        call scene_init(scene, stat, msg, p=12, e=0.25_qp, &
-            masses=[1.0_qp, 3.0_qp, 0.05_qp, 2.0_qp, 0.3_qp, 5.0_qp, 4.0_qp, 0.1_qp, 1.5_qp, &
-            0.02_qp, 2.5_qp, 1.0_qp], &
-            gaps=[1.0_qp, 0.0_qp, 0.0_qp, 0.0_qp, 0.0_qp, 1.0_qp, 0.0_qp, 0.0_qp, 0.0_qp, &
-            0.0_qp, 0.0_qp])
-        scene%closed_form_limits = .false.
-        scene%vtol = 1.0e-3_qp
-        call watched_run(scene, run, watch)
-        call check(error, watch%n >= 2, "several limits: "//itoa(watch%n)//" taken")
+        integer :: big
+        call check_limits_covered(error, "several limits", "p=12 e=0.25 " &
+            //"masses=1,3,0.05,2,0.3,5,4,0.1,1.5,0.02,2.5,1 gaps=1,0,0,0,0,1,0,0,0,0,0 " &
+            //"vtol=1e-3", 2, watch=watch)
         if (allocated(error)) return
         big = maxloc(watch%lower, 1)
         ! the scene is one where the largest bound comes before a smaller last one
         call check(error, big < watch%n .and. watch%lower(big) > 10*watch%lower(watch%n), &
             "several limits: the largest lower bound "//str(watch%lower(big))// &
             " is not ahead of a last one ten times smaller ("//str(watch%lower(watch%n))//")")
-        call check(error, run%v_bound >= watch%lower(big)*(1 - 64*eps), &
-            "several limits: v_bound "//str(run%v_bound)//" below the lower bound " &
-            //str(watch%lower(big))//" of limit "//itoa(big)//" of "//itoa(watch%n) &
-            //" (spheres "//itoa(watch%first(big))//"-"//itoa(watch%last(big))//")")
     end subroutine test_largest_limit
 
     !> A touching row struck at its left end, its last sphere the lightest
@@ -155,22 +143,8 @@ contains
     !> heaviest sphere, to which the smallest of the spheres' bounds comes.
     subroutine test_light_end(error)
         type(error_t), allocatable, intent(out) :: error
-        type(scene_t) :: scene
-        type(run_t) :: run
-        type(pooling_watch_t) :: watch
-        integer :: stat
-        character(len=200) :: msg
-        call scene_init(scene, stat, msg, p=7, e=0.3_qp, &
-            masses=[5.0_qp, 4.0_qp, 0.1_qp, 2.0_qp, 1.0_qp, 5.0_qp, 0.01_qp], &
-            gaps=[1.0_qp, 0.0_qp, 0.0_qp, 0.0_qp, 0.0_qp, 0.0_qp])
-        scene%closed_form_limits = .false.
-        scene%vtol = 1.0e-3_qp
-        call watched_run(scene, run, watch)
-        call check(error, watch%n >= 1, "light end: no limit taken")
-        if (allocated(error)) return
-        call check(error, run%v_bound >= maxval(watch%lower)*(1 - 64*eps), &
-            "light end: v_bound "//str(run%v_bound)//" below the lower bound " &
-            //str(maxval(watch%lower))//" of its limit")
+        call check_limits_covered(error, "light end", "p=7 e=0.3 " &
+            //"masses=5,4,0.1,2,1,5,0.01 gaps=1,0,0,0,0,0 vtol=1e-3", 1)
     end subroutine test_light_end
 
     !> Six spheres (masses 0.15 to 8.8, the last three gaps closed) at
@@ -184,24 +158,42 @@ contains
     !> largest; sqrt(2E/m) of the heaviest sphere is not (6e-11).
     subroutine test_fallback_group(error)
         type(error_t), allocatable, intent(out) :: error
-        type(scene_t) :: scene
         type(run_t) :: run
-        type(pooling_watch_t) :: watch
-        integer :: stat
-        character(len=200) :: msg
-        call scene_init(scene, stat, msg, p=6, e=0.37_qp, &
-            masses=[0.23_qp, 0.15_qp, 0.23_qp, 0.35_qp, 8.8_qp, 0.16_qp], &
-            gaps=[1.0_qp, 1.0_qp, 0.0_qp, 0.0_qp, 0.0_qp], tol=1.0e-10_qp)
-        scene%closed_form_limits = .false.
-        scene%vtol = 0.0_qp
-        call watched_run(scene, run, watch)
-        call check(error, watch%n >= 2 .and. all(run%dy >= 0.0_qp), &
-            "fallback: "//itoa(watch%n)//" limits, or the row does not separate")
+        call check_limits_covered(error, "fallback", "p=6 e=0.37 masses=0.23,0.15,0.23," &
+            //"0.35,8.8,0.16 gaps=1,1,0,0,0 tol=1e-10 vtol=0", 2, run=run)
         if (allocated(error)) return
-        call check(error, run%v_bound >= maxval(watch%lower)*(1 - 64*eps), &
-            "fallback: v_bound "//str(run%v_bound)//" below the lower bound " &
-            //str(maxval(watch%lower))//" of its limits")
+        call check(error, all(run%dy >= 0.0_qp), "fallback: the row does not separate")
     end subroutine test_fallback_group
+
+    !> The scene of `keys` (key=value words), the closed-form rules off, run
+    !> watched: it takes at least `least` limits, and the v_bound it ends with
+    !> covers the largest of their lower bounds; `run` and `watch` are what
+    !> it ran and saw.
+    subroutine check_limits_covered(error, what, keys, least, run, watch)
+        type(error_t), allocatable, intent(out) :: error
+        character(len=*), intent(in) :: what, keys
+        integer, intent(in) :: least
+        type(run_t), intent(out), optional :: run
+        type(pooling_watch_t), intent(out), optional :: watch
+        type(scene_t) :: scene
+        type(run_t) :: ran
+        type(pooling_watch_t) :: seen
+        integer :: big
+        call scene_of(keys, scene, error)
+        if (allocated(error)) return
+        scene%closed_form_limits = .false.
+        call watched_run(scene, ran, seen)
+        if (present(run)) run = ran
+        if (present(watch)) watch = seen
+        call check(error, seen%n >= least, &
+            what//": "//itoa(seen%n)//" limits taken, fewer than "//itoa(least))
+        if (allocated(error)) return
+        big = maxloc(seen%lower, 1)
+        call check(error, ran%v_bound >= seen%lower(big)*(1 - 64*eps), &
+            what//": v_bound "//str(ran%v_bound)//" below the lower bound " &
+            //str(seen%lower(big))//" of limit "//itoa(big)//" of "//itoa(seen%n) &
+            //" (spheres "//itoa(seen%first(big))//"-"//itoa(seen%last(big))//")")
+    end subroutine check_limits_covered
 
     !> Three spheres at e = 0, the middle one heavy (masses 1, 1e4, 1), tol =
     !> 1e-3: sphere 1 strikes sphere 2 and moves on with it, at one velocity,
@@ -216,10 +208,9 @@ contains
         type(scene_t) :: scene
         type(run_t) :: run
         type(pooling_watch_t) :: watch
-        integer :: stat, j
-        character(len=200) :: msg
-        call scene_init(scene, stat, msg, p=3, e=0.0_qp, masses=[1.0_qp, 1.0e4_qp, 1.0_qp], &
-            tol=1.0e-3_qp)
+        integer :: j
+        call scene_of("p=3 e=0 masses=1,1e4,1 tol=1e-3", scene, error)
+        if (allocated(error)) return
         call watched_run(scene, run, watch)
         if (watch%n == 0) return
         j = maxloc(watch%closed, 1)
