@@ -269,7 +269,8 @@ contains
             keys//": status "//itoa(ran%status)//", not "//itoa(status))
         call check(error, size(ran%v) == size(v), keys//": other number of spheres")
         if (allocated(error)) return
-        call check(error, all(abs(ran%v - v) <= tol), keys//": final velocities not the closed form")
+        call check(error, all(abs(ran%v - v) <= tol), &
+            keys//": final velocities not the closed form")
         if (present(run)) run = ran
     end subroutine check_end
 
