@@ -72,6 +72,30 @@ contains
         call method_run(method, out, record=.true.)
     end subroutine run_method
 
+    !> The reference `ref` of the definition's scene at e, `method`'s run of it
+    !> and their comparison.
+    subroutine against_reference(method, e, ref, run, cmp)
+        type(method_t), intent(in) :: method
+        real(qp), intent(in) :: e
+        type(outcome_t), intent(out) :: ref, run
+        type(comparison_t), intent(out) :: cmp
+        call reference(e, ref)
+        call run_method(method, e, run)
+        cmp = compare_outcomes(ref, run)
+    end subroutine against_reference
+
+    !> The definition's scene in real64 at e, with the gaps, tol and collision
+    !> budget given.
+    subroutine definition_dp(scene, e, gaps, tol, max_collisions)
+        type(scene_dp_t), intent(out) :: scene
+        real(dp), intent(in) :: e
+        real(dp), intent(in), optional :: gaps(:), tol
+        integer, intent(in), optional :: max_collisions
+        integer :: stat
+        character(len=200) :: msg
+        call scene_init(scene, stat, msg, e=e, gaps=gaps, tol=tol, max_collisions=max_collisions)
+    end subroutine definition_dp
+
     !> The reference reproduces the known counts, including 236 at e_c + 1e-4,
     !> where the engine with its default tolerance (the kind's epsilon) reaches
     !> tol first and follows the group on its own scale to the same 236 (it
@@ -182,18 +206,8 @@ contains
     !> units of v0 and L/v0 (about 1e-13).
     subroutine test_absolute_dp(error)
         type(error_t), allocatable, intent(out) :: error
-        type(outcome_t) :: ref, run
         type(comparison_t) :: cmp
-        real(qp) :: tol
-        call reference(0.3_qp, ref)
-        call run_method(new_method(method_absolute, dp), 0.3_qp, run)
-        cmp = compare_outcomes(ref, run)
-        tol = 64*ref%n*eps_dp
-        call check(error, run%status == status_normal .and. cmp%same_sequence, &
-            "absolute dp, e = 0.3: other sequence or status")
-        call check(error, cmp%v_error <= tol, "absolute dp: v error "//str(cmp%v_error))
-        call check(error, cmp%t_error <= tol*maxval(ref%t(:ref%n)), &
-            "absolute dp: t error "//str(cmp%t_error))
+        call check_absolute(error, dp, 0.3_qp, eps_dp, cmp)
         call check(error, cmp%v_error > 0.0_qp, "absolute dp agrees exactly: is it the reference?")
     end subroutine test_absolute_dp
 
@@ -201,28 +215,41 @@ contains
     !> order of real128 roundoff (1e-30 with the same allowance as above).
     subroutine test_absolute_qp(error)
         type(error_t), allocatable, intent(out) :: error
-        type(outcome_t) :: ref, run
         type(comparison_t) :: cmp
-        real(qp) :: tol
-        call reference(0.2_qp, ref)
-        call run_method(new_method(method_absolute, qp), 0.2_qp, run)
-        cmp = compare_outcomes(ref, run)
-        tol = 64*ref%n*epsilon(1.0_qp)
-        call check(error, run%status == status_normal .and. cmp%same_sequence .and. run%n == 13, &
-            "absolute qp, e = 0.2: other sequence or status")
-        call check(error, cmp%v_error <= tol, "absolute qp: v error "//str(cmp%v_error))
-        call check(error, cmp%t_error <= tol*maxval(ref%t(:ref%n)), &
-            "absolute qp: t error "//str(cmp%t_error))
+        call check_absolute(error, qp, 0.2_qp, epsilon(1.0_qp), cmp, n=13)
     end subroutine test_absolute_qp
+
+    !> Absolute variables in `kind` (of unit roundoff eps) at e against the
+    !> reference: a normal end, the same sequence (`n` collisions where
+    !> given), velocity and time errors within 64 n eps (times relative to the
+    !> last); `cmp` is the comparison.
+    subroutine check_absolute(error, kind, e, eps, cmp, n)
+        type(error_t), allocatable, intent(out) :: error
+        integer, intent(in) :: kind
+        real(qp), intent(in) :: e, eps
+        type(comparison_t), intent(out) :: cmp
+        integer, intent(in), optional :: n
+        type(outcome_t) :: ref, run
+        character(len=:), allocatable :: what
+        real(qp) :: tol
+        what = "absolute "//trim(merge("dp", "qp", kind == dp))
+        call against_reference(new_method(method_absolute, kind), e, ref, run, cmp)
+        tol = 64*ref%n*eps
+        call check(error, run%status == status_normal .and. cmp%same_sequence, &
+            what//", e = "//str(e)//": other sequence or status")
+        if (present(n)) call check(error, run%n == n, &
+            what//", e = "//str(e)//": "//itoa(run%n)//" collisions, not "//itoa(n))
+        call check(error, cmp%v_error <= tol, what//": v error "//str(cmp%v_error))
+        call check(error, cmp%t_error <= tol*maxval(ref%t(:ref%n)), &
+            what//": t error "//str(cmp%t_error))
+    end subroutine check_absolute
 
     !> The collision budget of the absolute method is honoured and reported.
     subroutine test_absolute_budget(error)
         type(error_t), allocatable, intent(out) :: error
         type(scene_dp_t) :: scene
         type(outcome_t) :: run
-        integer :: stat
-        character(len=200) :: msg
-        call scene_init(scene, stat, msg, e=0.2_dp, max_collisions=5)
+        call definition_dp(scene, 0.2_dp, max_collisions=5)
         call simulate_absolute(scene, run)
         call check(error, run%status == status_max_collisions .and. run%n == 5, &
             "absolute dp: budget of 5 collisions not honoured")
@@ -239,9 +266,7 @@ contains
         type(error_t), allocatable, intent(out) :: error
         type(scene_dp_t) :: scene
         type(outcome_t) :: run
-        integer :: stat
-        character(len=200) :: msg
-        call scene_init(scene, stat, msg, e=0.5_dp, gaps=[1.0_dp, 0.0_dp, 5.0_dp], tol=0.1_dp)
+        call definition_dp(scene, 0.5_dp, gaps=[1.0_dp, 0.0_dp, 5.0_dp], tol=0.1_dp)
         call simulate_absolute(scene, run, record=.true.)
         call check(error, run%status == status_negative_gap .and. run%n == 3, &
             "absolute dp: overlap not reported, status "//itoa(run%status)//", n = "//itoa(run%n))
@@ -255,16 +280,10 @@ contains
     !> agree to roundoff (and certainly to 1e-7).
     subroutine test_ode_rk8pd(error)
         type(error_t), allocatable, intent(out) :: error
-        type(outcome_t) :: ref, run
+        type(outcome_t) :: run
         type(comparison_t) :: cmp
-        call reference(0.2_qp, ref)
-        call run_method(new_method(method_ode, tol=1.0e-10_qp, stepper=stepper_rk8pd), &
-            0.2_qp, run)
-        cmp = compare_outcomes(ref, run)
-        call check(error, run%status == status_normal .and. cmp%same_sequence, &
-            "ode rk8pd 1e-10, e = 0.2: count "//itoa(run%n)//" or sequence wrong")
+        call check_ode(error, "rk8pd", stepper_rk8pd, 1.0e-10_qp, 0.2_qp, 1.0e-7_qp, run, cmp)
         call check(error, cmp%v_error <= 1.0e-7_qp, "ode rk8pd: v error "//str(cmp%v_error))
-        call check(error, cmp%t_error <= 1.0e-7_qp, "ode rk8pd: t error "//str(cmp%t_error))
         call check(error, cmp%t_error > 0.0_qp .and. run%steps > 0, &
             "ode rk8pd: exact times or no steps: is GSL called at all?")
     end subroutine test_ode_rk8pd
@@ -272,16 +291,28 @@ contains
     !> GSL rkf45 at tol = 1e-8, e = 0.5: right sequence, times to 1e-5.
     subroutine test_ode_rkf45(error)
         type(error_t), allocatable, intent(out) :: error
-        type(outcome_t) :: ref, run
+        type(outcome_t) :: run
         type(comparison_t) :: cmp
-        call reference(0.5_qp, ref)
-        call run_method(new_method(method_ode, tol=1.0e-8_qp, stepper=stepper_rkf45), &
-            0.5_qp, run)
-        cmp = compare_outcomes(ref, run)
-        call check(error, run%status == status_normal .and. cmp%same_sequence, &
-            "ode rkf45 1e-8, e = 0.5: count or sequence wrong")
-        call check(error, cmp%t_error <= 1.0e-5_qp, "ode rkf45: t error "//str(cmp%t_error))
+        call check_ode(error, "rkf45", stepper_rkf45, 1.0e-8_qp, 0.5_qp, 1.0e-5_qp, run, cmp)
     end subroutine test_ode_rkf45
+
+    !> The ODE method with GSL's `stepper` (named `name`) at tolerance `tol`
+    !> on the definition's scene at e: a normal end, the reference's sequence,
+    !> times within t_tol; `run` and `cmp` are its run and the comparison.
+    subroutine check_ode(error, name, stepper, tol, e, t_tol, run, cmp)
+        type(error_t), allocatable, intent(out) :: error
+        character(len=*), intent(in) :: name
+        integer, intent(in) :: stepper
+        real(qp), intent(in) :: tol, e, t_tol
+        type(outcome_t), intent(out) :: run
+        type(comparison_t), intent(out) :: cmp
+        type(outcome_t) :: ref
+        call against_reference(new_method(method_ode, tol=tol, stepper=stepper), e, ref, run, cmp)
+        call check(error, run%status == status_normal .and. cmp%same_sequence, &
+            "ode "//name//" "//str(tol)//", e = "//str(e)//": count "//itoa(run%n) &
+            //" or sequence wrong")
+        call check(error, cmp%t_error <= t_tol, "ode "//name//": t error "//str(cmp%t_error))
+    end subroutine check_ode
 
     !> The ODE method's end criterion is its tolerance: at e = 0.2 the last
     !> impact approaches at 9.1e-4 v0, so tol = 1e-3 stops one impact early
@@ -290,9 +321,7 @@ contains
         type(error_t), allocatable, intent(out) :: error
         type(scene_dp_t) :: scene
         type(outcome_t) :: run
-        integer :: stat
-        character(len=200) :: msg
-        call scene_init(scene, stat, msg, e=0.2_dp)
+        call definition_dp(scene, 0.2_dp)
         call simulate_ode(scene, 1.0e-3_dp, run)
         call check(error, run%status == status_normal .and. run%n == 12, &
             "ode tol 1e-3, e = 0.2: expected 12 impacts, got "//itoa(run%n))
@@ -311,9 +340,7 @@ contains
         type(outcome_t) :: ref, run
         type(comparison_t) :: cmp
         real(qp), parameter :: h = 1.0e-3_qp
-        call reference(1.0_qp, ref)
-        call run_method(new_method(method_stepping, h=h), 1.0_qp, run)
-        cmp = compare_outcomes(ref, run)
+        call against_reference(new_method(method_stepping, h=h), 1.0_qp, ref, run, cmp)
         call check(error, run%n == 3 .and. cmp%same_sequence, "stepping e = 1: not 3 impacts")
         call check(error, cmp%t_error <= h*(1 + 1.0e-9_qp) .and. &
             all(run%t(:3) >= ref%t(:3) - 16*eps_dp*3), &
@@ -335,9 +362,7 @@ contains
         type(comparison_t) :: cmp
         real(qp) :: error_coarse
         real(qp), parameter :: h = 1.0e-3_qp
-        call reference(0.2_qp, ref)
-        call run_method(new_method(method_stepping, h=h), 0.2_qp, run)
-        cmp = compare_outcomes(ref, run)
+        call against_reference(new_method(method_stepping, h=h), 0.2_qp, ref, run, cmp)
         call check(error, cmp%same_sequence .and. run%status == status_normal, &
             "stepping e = 0.2: count "//itoa(run%n)//" or sequence wrong")
         call check(error, cmp%v_error <= 16*eps_dp, "stepping e = 0.2: v error "//str(cmp%v_error))
@@ -354,9 +379,7 @@ contains
         type(error_t), allocatable, intent(out) :: error
         type(scene_dp_t) :: scene
         type(outcome_t) :: run
-        integer :: stat
-        character(len=200) :: msg
-        call scene_init(scene, stat, msg, e=0.2_dp)
+        call definition_dp(scene, 0.2_dp)
         call simulate_stepping(scene, 1.0e-3_dp, run, max_steps=100_int64)
         call check(error, run%status == status_budget .and. run%steps == 100 .and. run%n == 0, &
             "stepping: budget of 100 steps not honoured")
