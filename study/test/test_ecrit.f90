@@ -137,8 +137,16 @@ contains
         type(run_t) :: run
         type(scene_dp_t) :: scene_dp
         type(run_dp_t) :: run_dp
-        integer :: stat
+        integer :: stat, i
         character(len=200) :: msg
+        !> The real64 scenes (tol the default, real64's epsilon, where not
+        !> given) and the outcome each must have.
+        character(len=*), parameter :: dp_names(3) = [character(len=24) :: &
+            "real64 p=4 e=0.2", "real64 p=4 e=0.1", "real64 p=3 e=0.5 tol=0.3"]
+        integer, parameter :: dp_p(3) = [4, 4, 3], &
+            dp_expected(3) = [outcome_finite, outcome_certified, outcome_undecided]
+        real(dp), parameter :: dp_e(3) = [0.2_dp, 0.1_dp, 0.5_dp], &
+            dp_tol(3) = [epsilon(1.0_dp), epsilon(1.0_dp), 0.3_dp]
         call scene_init(scene, stat, msg, p=4, e=0.2_qp)
         call expect("p=4 e=0.2", outcome_finite)
         if (allocated(error)) return
@@ -179,14 +187,13 @@ contains
         call scene_init(scene, stat, msg, p=4, e=0.1_qp, max_collisions=20)
         call expect("p=4 e=0.1 max_collisions=20", outcome_undecided)
         if (allocated(error)) return
-        call scene_init(scene_dp, stat, msg, p=4, e=0.2_dp)
-        call expect_dp("real64 p=4 e=0.2", outcome_finite)
-        if (allocated(error)) return
-        call scene_init(scene_dp, stat, msg, p=4, e=0.1_dp)
-        call expect_dp("real64 p=4 e=0.1", outcome_certified)
-        if (allocated(error)) return
-        call scene_init(scene_dp, stat, msg, p=3, e=0.5_dp, tol=0.3_dp)
-        call expect_dp("real64 p=3 e=0.5 tol=0.3", outcome_undecided)
+        do i = 1, size(dp_names)
+            call scene_init(scene_dp, stat, msg, p=dp_p(i), e=dp_e(i), tol=dp_tol(i))
+            call simulate(scene_dp, run_dp)
+            call check(error, outcome_of(run_dp) == dp_expected(i), trim(dp_names(i))// &
+                ": outcome "//outcome_word(outcome_of(run_dp))//", expected " &
+                //outcome_word(dp_expected(i)))
+        end do
     contains
         !> Run `scene`; its outcome must be `expected`.
         subroutine expect(name, expected)
@@ -196,14 +203,6 @@ contains
             call check(error, outcome_of(run) == expected, name//": outcome "// &
                 outcome_word(outcome_of(run))//", expected "//outcome_word(expected))
         end subroutine expect
-        !> Run `scene_dp`; its outcome must be `expected`.
-        subroutine expect_dp(name, expected)
-            character(len=*), intent(in) :: name
-            integer, intent(in) :: expected
-            call simulate(scene_dp, run_dp)
-            call check(error, outcome_of(run_dp) == expected, name//": outcome "// &
-                outcome_word(outcome_of(run_dp))//", expected "//outcome_word(expected))
-        end subroutine expect_dp
     end subroutine test_outcome_of
 
     !> edge_of on a made-up scan of 11 points over [0, 1] (h = 0.1): the ends,
