@@ -2,7 +2,7 @@
 !> (every answer with its cross-check, how it was obtained, the figures), made
 !> from the per-task answer tables.
 program c12_summary
-    use sphere_row_tables, only: open_table, tab, split_tabs
+    use sphere_row_tables, only: open_table, tab, split_tabs, file_exists
     use sphere_row, only: qp, short_text
     use sphere_row_study_cli, only: cli_t, start_program, read_keys, fail, stop_unless_normal, &
         close_tables
@@ -195,8 +195,8 @@ contains
     !> Every task's answer table must be there.
     subroutine check_inputs()
         do i = 1, size(tasks)
-            if (.not. exists(out//"/"//trim(tasks(i))//"_answers.tsv")) call fail("out = " &
-                //out//": "//trim(tasks(i))//"_answers.tsv missing: run make study")
+            if (.not. file_exists(out//"/"//trim(tasks(i))//"_answers.tsv")) call fail( &
+                "out = "//out//": "//trim(tasks(i))//"_answers.tsv missing: run make study")
         end do
     end subroutine check_inputs
 
@@ -306,11 +306,5 @@ contains
         call fail("out = "//out//": "//task//"_answers.tsv has no row "//key// &
             ": run make study")
     end function field
-
-    logical function exists(path)
-        character(len=*), intent(in) :: path
-        inquire (file=path, exist=exists)
-    end function exists
-
 
 end program c12_summary

@@ -16,7 +16,7 @@ module sphere_row_tables
     implicit none
     private
     public :: open_table, close_table, discard_tables, write_answer, answer_header, tab, &
-        split_tabs, cpu_model, yes_no, report_tables
+        split_tabs, cpu_model, yes_no, report_tables, file_exists
     public :: row_t, write_rows
 
     !> The field separator.
@@ -330,5 +330,11 @@ contains
             word = "no"
         end if
     end function yes_no
+
+    !> True when a file (or directory) `path` exists.
+    logical function file_exists(path)
+        character(len=*), intent(in) :: path
+        inquire (file=path, exist=file_exists)
+    end function file_exists
 
 end module sphere_row_tables

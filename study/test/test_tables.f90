@@ -4,7 +4,7 @@
 module test_tables
     use, intrinsic :: iso_fortran_env, only: int64
     use sphere_row, only: status_normal
-    use sphere_row_tables, only: open_table, close_table, discard_tables
+    use sphere_row_tables, only: open_table, close_table, discard_tables, file_exists
     use testsuite, only: error_t, unittest_t, new_unittest, check, read_text
     implicit none
     private
@@ -33,14 +33,14 @@ contains
         call open_table(dir, "a.tsv", "x"//achar(9)//"y", unit, stat, msg)
         call check(error, stat == status_normal, "open_table: "//trim(msg))
         if (allocated(error)) return
-        call check(error, exists(dir//"/a.tsv.tmp") .and. .not. exists(dir//"/a.tsv"), &
-            "while written, the table is a.tsv.tmp only")
+        call check(error, file_exists(dir//"/a.tsv.tmp") .and. &
+            .not. file_exists(dir//"/a.tsv"), "while written, the table is a.tsv.tmp only")
         write (unit, "(a)") "1"//achar(9)//"2"
         call close_table(unit, stat, msg)
         call check(error, stat == status_normal, "close_table: "//trim(msg))
         call check(error, read_text(dir//"/a.tsv") == "x"//achar(9)//"y"//new_line("a")//"1" &
             //achar(9)//"2"//new_line("a"), "a.tsv: "//read_text(dir//"/a.tsv"))
-        call check(error, .not. exists(dir//"/a.tsv.tmp"), "a.tsv.tmp left behind")
+        call check(error, .not. file_exists(dir//"/a.tsv.tmp"), "a.tsv.tmp left behind")
     end subroutine test_complete
 
     !> Bytes that did not reach the disk (here: the table's temporary name is
@@ -63,7 +63,7 @@ contains
         call check(error, stat /= status_normal, "a table short on disk was accepted")
         call check(error, index(msg, "out = "//dir//"/b.tsv: cannot be written (only 0 of " &
             //"23895 bytes reached the disk)") == 1, "message: "//trim(msg))
-        call check(error, .not. exists(dir//"/b.tsv.tmp"), "b.tsv.tmp left behind")
+        call check(error, .not. file_exists(dir//"/b.tsv.tmp"), "b.tsv.tmp left behind")
         call check(error, read_text(dir//"/b.tsv") == "old"//new_line("a"), &
             "the previous b.tsv changed")
     end subroutine test_short
@@ -80,13 +80,9 @@ contains
         call check(error, stat == status_normal, "open_table: "//trim(msg))
         if (allocated(error)) return
         call discard_tables()
-        call check(error, .not. (exists(dir//"/c.tsv.tmp") .or. exists(dir//"/d.tsv.tmp") &
-            .or. exists(dir//"/c.tsv") .or. exists(dir//"/d.tsv")), "a table was left")
+        call check(error, .not. (file_exists(dir//"/c.tsv.tmp") .or. &
+            file_exists(dir//"/d.tsv.tmp") .or. file_exists(dir//"/c.tsv") .or. &
+            file_exists(dir//"/d.tsv")), "a table was left")
     end subroutine test_discard
-
-    logical function exists(path)
-        character(len=*), intent(in) :: path
-        inquire (file=path, exist=exists)
-    end function exists
 
 end module test_tables
