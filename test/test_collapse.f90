@@ -9,7 +9,7 @@ module test_collapse
     use sphere_row_cascade, only: cascade_jump
     use testsuite, only: error_t, unittest_t, new_unittest, check, seed_random, cases, &
         read_text
-    use test_support, only: scene_of, split_tabs, random_row
+    use test_support, only: run_and_rerun, scene_of, split_tabs, random_row
     implicit none
     private
     public :: collect_collapse
@@ -44,16 +44,11 @@ contains
         type(scene_t) :: scene
         type(run_t) :: short, long
         real(qp) :: u(42)
-        integer :: stat, i, p, checked
-        character(len=200) :: msg
+        integer :: i, checked
         call seed_random(8642, 7)
         checked = 0
         do i = 1, cases(60, 1200)
-            call random_number(u)
-            p = 3 + int(8*u(1))
-            call scene_init(scene, stat, msg, p=p, e=u(2), &
-                masses=1.0e3_qp**(2*u(3:p + 2) - 1), &
-                gaps=merge(0.0_qp, 2*u(23:p + 21), u(23:p + 21) < 0.3_qp), max_collisions=20000)
+            call random_row(scene, 0.3_qp, 20000, p_range=[3, 10], unequal=.true., drawn=u)
             call simulate(scene, long)
             if (long%answer > answer_tolerance .or. long%n < 40) cycle
             scene%max_collisions = 10 + int((long%n - 20)*u(42))
@@ -81,18 +76,15 @@ contains
         type(error_t), allocatable, intent(out) :: error
         type(scene_t) :: scene
         type(run_t) :: bounded, merged
-        integer :: stat, i
-        character(len=200) :: msg
-        real(qp), parameter :: es(2) = [0.5_qp, 0.6_qp]
-        do i = 1, size(es)
-            call scene_init(scene, stat, msg, p=20, e=es(i), gaps=spread(0.0_qp, 1, 19))
-            call simulate(scene, merged)
-            scene%closed_form_limits = .false.
-            scene%vtol = 1.0e-6_qp
-            call simulate(scene, bounded)
+        integer :: i
+        character(len=*), parameter :: rows(2) = ["p=20 a=0 e=0.5", "p=20 a=0 e=0.6"]
+        do i = 1, size(rows)
+            call scene_of(rows(i), scene, error)
+            if (allocated(error)) return
+            call run_and_rerun(scene, merged, bounded, vtol=1.0e-6_qp, closed_form_limits=.false.)
             call check(error, merged%answer == answer_certified .and. &
                 bounded%answer == answer_bounded .and. bounded%limits%bounded == 1, &
-                "bounded cascade, e = "//str(es(i))//": answers "//answer_word(merged%answer) &
+                "bounded cascade, "//rows(i)//": answers "//answer_word(merged%answer) &
                 //" and "//answer_word(bounded%answer))
             call check(error, bounded%v_bound > 0 .and. bounded%v_bound <= scene%vtol, &
                 "bounded cascade: bound "//str(bounded%v_bound)//" not in (0, vtol]")
@@ -104,7 +96,9 @@ contains
         ! the rule waits for vtol: at vtol a third of the bound b it reaches at
         ! its first look (4096 collisions), it takes the cascade only later,
         ! with a bound of at most vtol
-        scene%e = es(1)
+        call scene_of(rows(1), scene, error)
+        if (allocated(error)) return
+        scene%closed_form_limits = .false.
         scene%vtol = 0.999_qp
         call simulate(scene, merged)
         scene%vtol = merged%v_bound/3
@@ -128,9 +122,7 @@ contains
         character(len=200) :: msg
         real(qp), parameter :: expected = 0.5_qp + sqrt(0.5_qp)
         call scene_init(scene, stat, msg, p=3, e=1.0_qp, max_collisions=1)
-        call simulate(scene, short)
-        scene%max_collisions = 0
-        call simulate(scene, long)
+        call run_and_rerun(scene, short, long, max_collisions=0)
         call check(error, short%answer == answer_unresolved .and. long%answer == answer_exact, &
             "cone bound by hand: answers "//answer_word(short%answer)//" and " &
             //answer_word(long%answer))
@@ -154,9 +146,7 @@ contains
         integer :: stat
         character(len=200) :: msg
         call scene_init(scene, stat, msg, masses=[1.0e-40_qp, 1.0_qp, 1.0_qp, 1.0_qp])
-        call simulate(scene, coarse)
-        scene%tol = 1.0e-60_qp
-        call simulate(scene, fine)
+        call run_and_rerun(scene, coarse, fine, tol=1.0e-60_qp)
         call check(error, coarse%answer == answer_tolerance .and. fine%answer == answer_exact, &
             "tolerance end: answers "//answer_word(coarse%answer)//" and " &
             //answer_word(fine%answer))
@@ -188,21 +178,13 @@ contains
         type(error_t), allocatable, intent(out) :: error
         type(scene_t) :: scene
         type(run_t) :: cycle, stepped
-        integer :: stat, i
-        character(len=200) :: msg
-        real(qp), parameter :: es(3) = [0.05_qp, 0.1_qp, 0.1_qp]
-        integer, parameter :: ps(3) = [3, 4, 4]
-        do i = 1, size(es)
-            if (i < 3) then
-                call scene_init(scene, stat, msg, p=ps(i), e=es(i))
-            else
-                call scene_init(scene, stat, msg, p=ps(i), e=es(i), &
-                    masses=[1.0_qp, 2.0_qp, 1.5_qp, 1.0_qp])
-            end if
-            call simulate(scene, cycle)
-            scene%closed_form_limits = .false.
-            scene%tol = 1.0e-60_qp
-            call simulate(scene, stepped)
+        integer :: i
+        character(len=*), parameter :: rows(3) = [character(len=32) :: "p=3 e=0.05", &
+            "p=4 e=0.1", "p=4 e=0.1 masses=1,2,1.5,1"]
+        do i = 1, size(rows)
+            call scene_of(trim(rows(i)), scene, error)
+            if (allocated(error)) return
+            call run_and_rerun(scene, cycle, stepped, tol=1.0e-60_qp, closed_form_limits=.false.)
             call check(error, cycle%status == status_collapsed .and. &
                 cycle%limits%closed_form >= 1 .and. cycle%answer == answer_certified .and. &
                 stepped%status == status_collapsed, "cycle time, scene "//itoa(i) &
@@ -334,23 +316,18 @@ contains
         type(error_t), allocatable, intent(out) :: error
         type(scene_t) :: scene
         type(run_t) :: coarse, fine
-        integer :: stat, i
-        character(len=200) :: msg
-        real(qp), parameter :: es(2) = [0.427873_qp, 0.431267_qp]
-        real(qp), parameter :: masses(8, 2) = reshape([ &
-            67.09_qp, 1.965_qp, 1.002_qp, 1.569_qp, 1.526_qp, 1.79_qp, 1.805_qp, 1.102_qp, &
-            1.034_qp, 0.6691_qp, 0.3555_qp, 0.6543_qp, 0.794_qp, 0.002794_qp, 0.6175_qp, &
-            1.253_qp], [8, 2])
-        real(qp), parameter :: gaps(7, 2) = reshape([ &
-            1.046_qp, 1.121_qp, 1.486_qp, 0.0_qp, 0.03103_qp, 0.0_qp, 0.5512_qp, &
-            0.0_qp, 1.199_qp, 0.6832_qp, 0.675_qp, 1.975_qp, 0.0_qp, 1.594_qp], [7, 2])
-        do i = 1, size(es)
-            call scene_init(scene, stat, msg, p=8, e=es(i), masses=masses(:, i), gaps=gaps(:, i))
-            call simulate(scene, coarse)
-            scene%tol = 1.0e-60_qp
-            call simulate(scene, fine)
+        integer :: i
+        character(len=*), parameter :: rows(2) = [character(len=120) :: &
+            "p=8 e=0.427873 masses=67.09,1.965,1.002,1.569,1.526,1.79,1.805,1.102 " &
+            //"gaps=1.046,1.121,1.486,0,0.03103,0,0.5512", &
+            "p=8 e=0.431267 masses=1.034,0.6691,0.3555,0.6543,0.794,0.002794,0.6175,1.253 " &
+            //"gaps=0,1.199,0.6832,0.675,1.975,0,1.594"]
+        do i = 1, size(rows)
+            call scene_of(trim(rows(i)), scene, error)
+            if (allocated(error)) return
+            call run_and_rerun(scene, coarse, fine, tol=1.0e-60_qp)
             call check(error, fine%n > coarse%n .and. coarse%answer == answer_tolerance, &
-                "e = "//str(es(i))//": "//itoa(coarse%n)//" collisions, answer "// &
+                "e = "//str(scene%e)//": "//itoa(coarse%n)//" collisions, answer "// &
                 answer_word(coarse%answer)//"; at tol 1e-60 "//itoa(fine%n)// &
                 " collisions: expected more, and the first answer tolerance")
             if (allocated(error)) return
@@ -477,9 +454,7 @@ contains
             p = 3 + int(6*u(1))
             call scene_init(scene, stat, msg, p=p, e=0.0_qp, masses=0.5_qp + 1.5_qp*u(2:p + 1), &
                 gaps=merge(0.0_qp, u(3:p + 1), u(3:p + 1) < 0.4_qp))
-            call simulate(scene, fast)
-            scene%closed_form_limits = .false.
-            call simulate(scene, slow)
+            call run_and_rerun(scene, fast, slow, closed_form_limits=.false.)
             call check(error, fast%status == status_collapsed .and. &
                 slow%status /= status_max_collisions, "plastic cascade: status")
             if (allocated(error)) return
@@ -537,9 +512,7 @@ contains
             "e = 0.172: not 115 collisions")
         do i = 1, size(above)
             call scene_init(scene, stat, msg, e=e_crit_4 + above(i), tol=1.0e-4000_qp)
-            call simulate(scene, with)
-            scene%closed_form_limits = .false.
-            call simulate(scene, without)
+            call run_and_rerun(scene, with, without, closed_form_limits=.false.)
             call check(error, with%status == status_normal .and. with%n == without%n .and. &
                 all(with%v == without%v), "just above e_crit: the count or state changed")
             if (allocated(error)) return
@@ -667,9 +640,7 @@ contains
         do i = 1, scenes
             call random_row(scene, 0.2_qp, cap)
             p = scene%p
-            call simulate(scene, with)
-            scene%closed_form_limits = .false.
-            call simulate(scene, without)
+            call run_and_rerun(scene, with, without, closed_form_limits=.false.)
             if (without%status == status_normal) then
                 finite = finite + 1
                 call check(error, with%status == status_normal .and. with%n == without%n .and. &
@@ -718,9 +689,7 @@ contains
             call scene_init(scene, stat, msg, p=p, e=u(2), &
                 masses=merge(1.0_qp, 1.0e2_qp**(2*u(3:p + 2) - 1), u(24) < 0.5_qp), &
                 gaps=spread(0.0_qp, 1, p - 1), max_collisions=100000)
-            call simulate(scene, fast)
-            scene%closed_form_limits = .false.
-            call simulate(scene, slow)
+            call run_and_rerun(scene, fast, slow, closed_form_limits=.false.)
             if (slow%status == status_max_collisions .or. fast%limits%closed_form == 0) cycle
             compared = compared + 1
             ! (a run that the fallback ends `normal`, its last rates within tol
@@ -751,10 +720,7 @@ contains
         call scene_init(scene, stat, msg, p=6, e=0.875_qp, &
             masses=[76.0_qp, 143.0_qp, 0.0019_qp, 0.0104_qp, 0.217_qp, 54.5_qp], &
             gaps=[0.0_qp, 0.62_qp, 1.79_qp, 0.33_qp, 1.3_qp])
-        call simulate(scene, fast)
-        scene%closed_form_limits = .false.
-        scene%max_collisions = 2000000
-        call simulate(scene, slow)
+        call run_and_rerun(scene, fast, slow, max_collisions=2000000, closed_form_limits=.false.)
         call check(error, fast%status == status_collapsed .and. fast%n < 300000 .and. &
             fast%limits%closed_form >= 1 .and. fast%answer == answer_certified, &
             "light between heavy: no certified limit within 300,000")
@@ -1127,10 +1093,8 @@ contains
                 1.6365618654526770114898681640625_qp, 0.3961061802692711353302001953125_qp, &
                 0.3520521004684269428253173828125_qp, 0.0_qp])
             if (way == 2) scene%calendar_from = 2
-            call simulate(scene, fast)
-            scene%closed_form_limits = .false.
-            scene%max_collisions = 1000000
-            call simulate(scene, slow)
+            call run_and_rerun(scene, fast, slow, &
+                max_collisions=1000000, closed_form_limits=.false.)
             call check(error, fast%status == status_collapsed .and. fast%n < 5000, &
                 "quiet cascade ("//trim(ways(way))//"): no collapse within 5000 collisions")
             if (allocated(error)) return

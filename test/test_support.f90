@@ -4,14 +4,14 @@
 !> given to the CLI or tools/replay as it stands; and the readers of
 !> tools/replay's table line.
 module test_support
-    use sphere_row, only: qp, scene_t, scene_init
+    use sphere_row, only: qp, scene_t, run_t, scene_init, simulate
     use sphere_row_cli, only: cli_t, string_t
     use sphere_row_scene_keys, only: add_scene_keys, add_state_keys, scene_from_cli
     use sphere_row_error, only: input_error_t => error_t
     use testsuite, only: error_t
     implicit none
     private
-    public :: scene_of, random_row, words, split_tabs, read_reals
+    public :: scene_of, random_row, words, split_tabs, read_reals, run_and_rerun
 
 contains
 
@@ -35,23 +35,56 @@ contains
         end if
     end subroutine scene_of
 
+    !> The run of `scene` (`first`), then the run of the same scene with the
+    !> settings given changed (`second`): a finer tol, another vtol or
+    !> budget, the closed-form limits on or off. `scene` keeps the changes.
+    subroutine run_and_rerun(scene, first, second, tol, vtol, max_collisions, &
+        closed_form_limits)
+        type(scene_t), intent(inout) :: scene
+        type(run_t), intent(inout) :: first, second
+        real(qp), intent(in), optional :: tol, vtol
+        integer, intent(in), optional :: max_collisions
+        logical, intent(in), optional :: closed_form_limits
+        call simulate(scene, first)
+        if (present(tol)) scene%tol = tol
+        if (present(vtol)) scene%vtol = vtol
+        if (present(max_collisions)) scene%max_collisions = max_collisions
+        if (present(closed_form_limits)) scene%closed_form_limits = closed_form_limits
+        call simulate(scene, second)
+    end subroutine run_and_rerun
+
     !> A random row drawn from the intrinsic generator (42 numbers a row, so
-    !> that a seeded test sees the same rows on every run): p from 2 to 20, e
-    !> uniform in [0, 1], masses all 1 or log-uniform in [1e-3, 1e3] (half the
-    !> rows each), gaps uniform in [0, 2) and each closed with probability
-    !> `closed`; at most `cap` collisions. The rows of the random tests of the
-    !> collapse rules and of the calendar.
-    subroutine random_row(scene, closed, cap)
+    !> that a seeded test sees the same rows on every run): p from 2 to 20
+    !> (from p_range(1) to p_range(2) where given), e uniform in [0, 1],
+    !> masses all 1 or log-uniform in [1e-3, 1e3] (half the rows each; every
+    !> row log-uniform where `unequal`), gaps uniform in [0, 2) and each
+    !> closed with probability `closed`; at most `cap` collisions. `drawn`
+    !> holds the 42 numbers. The rows of the random tests of the collapse
+    !> rules and of the calendar.
+    subroutine random_row(scene, closed, cap, p_range, unequal, drawn)
         type(scene_t), intent(out) :: scene
         real(qp), intent(in) :: closed
         integer, intent(in) :: cap
+        integer, intent(in), optional :: p_range(2)
+        logical, intent(in), optional :: unequal
+        real(qp), intent(out), optional :: drawn(42)
         real(qp) :: u(42)
-        integer :: p, stat
+        integer :: p, stat, lo, hi
+        logical :: equal
         character(len=200) :: msg
+        lo = 2
+        hi = 20
+        if (present(p_range)) then
+            lo = p_range(1)
+            hi = p_range(2)
+        end if
         call random_number(u)
-        p = 2 + int(19*u(1))
+        if (present(drawn)) drawn = u
+        p = lo + int((hi - lo + 1)*u(1))
+        equal = u(42) < 0.5_qp
+        if (present(unequal)) equal = equal .and. .not. unequal
         call scene_init(scene, stat, msg, p=p, e=u(2), &
-            masses=merge(1.0_qp, 1.0e3_qp**(2*u(3:p + 2) - 1), u(42) < 0.5_qp), &
+            masses=merge(1.0_qp, 1.0e3_qp**(2*u(3:p + 2) - 1), equal), &
             gaps=merge(0.0_qp, 2*u(23:p + 21), u(23:p + 21) < closed), max_collisions=cap)
     end subroutine random_row
 
