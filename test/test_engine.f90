@@ -391,9 +391,8 @@ contains
         type(scene_t) :: scene
         type(run_t) :: run
         type(event_log_t) :: log
-        integer :: stat
-        character(len=200) :: msg
-        call scene_init(scene, stat, msg, e=0.2_qp)
+        call scene_of("e=0.2", scene, error)
+        if (allocated(error)) return
         call simulate(scene, run, log)
         ! 1-2 at t = 1; sphere 2 leaves at (1+e)/2 = 0.6 and meets 3 after 1/0.6.
         call check(error, log%first(1) == 1 .and. abs(log%t(1) - 1) <= 4*eps, "first collision")
