@@ -484,7 +484,10 @@ ecrit-full: prereqs $(ECRIT_STAMP) $(CLI_STAMP) ## the full e_c(p) sweep p = 3 .
 # build on 1 and 2 threads and the MPI build on 1, 2 and 4 ranks (4 ranks also
 # for 2 rows, where ranks have none) must write the same bytes; so must
 # c12-c2 on a short stream of 5 blocks whose third straddles n (4 ranks: one
-# with two blocks, one with the straddling block's main and rest counts)
+# with two blocks, one with the straddling block's main and rest counts).
+# In the recipe, `ranks PREFIX PROGRAM KEYS TABLES` is that comparison for one
+# program: its runs on 1 and 2 threads and on 1, 2 and 4 ranks, each in
+# build/test-mpi/PREFIX..., must write the serial run's TABLES.
 ECRIT_QUICK := p_min=3 p_max=10 n_scan=30
 C2_QUICK := n=25000 nmax=45000
 ECRIT_TABLES := ecrit.tsv ecrit_answers.tsv ecrit_map.tsv ecrit_robust.tsv
@@ -497,22 +500,19 @@ test-mpi: prereqs $(BUILD_STAMP) $(MPI_STAMP) ## c12-ecrit and c12-c2 on 1, 2, 4
 			cat $$t/$$dir.log; echo "$$dir: failed"; failed=$$((failed + 1)); fi; }; \
 	same() { a=$$1; b=$$2; shift 2; for f in "$$@"; do \
 		cmp $$t/$$a/$$f $$t/$$b/$$f || failed=$$((failed + 1)); done; }; \
+	ranks() { pre=$$1; program=$$2; keys=$$3; tables=$$4; \
+		run $${pre}serial env OMP_NUM_THREADS=1 $(BIN)/$$program $$keys; \
+		run $${pre}threads2 env OMP_NUM_THREADS=2 $(BIN)/$$program $$keys; \
+		same $${pre}serial $${pre}threads2 $$tables; \
+		for np in 1 2 4; do \
+			run $${pre}np$$np $(call mpirun_np,$$np) $(MPI_BIN)/$$program $$keys; \
+			same $${pre}serial $${pre}np$$np $$tables; done; }; \
 	mkdir -p $$t; \
-	run serial env OMP_NUM_THREADS=1 $(BIN)/c12-ecrit $(ECRIT_QUICK); \
-	run threads2 env OMP_NUM_THREADS=2 $(BIN)/c12-ecrit $(ECRIT_QUICK); \
-	same serial threads2 $(ECRIT_TABLES); \
-	for np in 1 2 4; do \
-		run np$$np $(call mpirun_np,$$np) $(MPI_BIN)/c12-ecrit $(ECRIT_QUICK); \
-		same serial np$$np $(ECRIT_TABLES); done; \
+	ranks "" c12-ecrit "$(ECRIT_QUICK)" "$(ECRIT_TABLES)"; \
 	run serial_two env OMP_NUM_THREADS=1 $(BIN)/c12-ecrit p_min=3 p_max=4; \
 	run np4_two $(call mpirun_np,4) $(MPI_BIN)/c12-ecrit p_min=3 p_max=4; \
 	same serial_two np4_two $(ECRIT_TABLES); \
-	run c2_serial env OMP_NUM_THREADS=1 $(BIN)/c12-c2 $(C2_QUICK); \
-	run c2_threads2 env OMP_NUM_THREADS=2 $(BIN)/c12-c2 $(C2_QUICK); \
-	same c2_serial c2_threads2 $(C2_TABLES); \
-	for np in 1 2 4; do \
-		run c2_np$$np $(call mpirun_np,$$np) $(MPI_BIN)/c12-c2 $(C2_QUICK); \
-		same c2_serial c2_np$$np $(C2_TABLES); done; \
+	ranks c2_ c12-c2 "$(C2_QUICK)" "$(C2_TABLES)"; \
 	lines=$$($(call mpirun_np,2) $(MPI_BIN)/c12-c2 nmax=0 2>&1 >/dev/null | grep -c '^c12-c2: ' || true); \
 	if [ "$$lines" != 1 ]; then echo "refused key on 2 ranks: told $$lines times"; failed=$$((failed + 1)); fi; \
 	if [ $$failed -gt 0 ]; then echo "test-mpi: $$failed runs or comparisons failed"; exit 1; fi; \
