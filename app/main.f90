@@ -4,7 +4,8 @@ program sphere_row_main
     use sphere_row, only: qp, dp, scene_t, run_t, event_log_t, simulate, status_word, &
         status_invalid, status_normal, event_collision, event_collapse, itoa, auto_t, &
         simulate_auto, simulate_in_dp, answer_word, answer_certified, answer_unresolved, &
-        answer_exact, real_str, collapse_proven, budget, sphere_row_version
+        answer_exact, real_str, collapse_proven, budget, sphere_row_version, order_premise, &
+        order_premise_in_dp, status_horizon
     use sphere_row_cli, only: cli_t, read_command_line, fail
     use sphere_row_scene_keys, only: add_scene_keys, add_state_keys, scene_from_cli, &
         check_scene_in_dp
@@ -36,6 +37,14 @@ program sphere_row_main
     !> real(8)'s where it answered (precision=dp, or auto in real(8)); no
     !> number is written with more digits than its kind holds.
     integer :: precision_digits = precision(1.0_qp) + 1
+    !> The order check's budget, p^2 times the collisions it would follow to
+    !> the answer's premise (order_premise), in real(16) and in real(8). Tuned
+    !> on this project's machine (release build, p = 10...190): the check
+    !> costs about 1e-6 s (real(16)) and 2e-8 s (real(8)) per p^2 a
+    !> collision, so each budget is about 4 s at most; the collapse survey's
+    !> certified rows the check proves need at most 6e5. Beyond it the answer
+    !> says that its order is computed, not checked.
+    real(qp), parameter :: order_work_qp = 4.0e6_qp, order_work_dp = 2.0e8_qp
     !> The number of the last output line, i, and its digits, the last
     !> place_length characters of place_text (count_to).
     integer :: place_value = -1, place_length = 0
@@ -398,6 +407,7 @@ contains
         end if
         if (wanted("answer")) call out%put("answer "//answer_word(run%answer))
         if (wanted("v_bound")) call out%put("v_bound "//real_str(bound, 2))
+        if (run%answer /= answer_unresolved) call write_premises()
         if (run%limits%n > 0) then
             if (wanted("collapses")) call out%put("collapses "//itoa(run%limits%n))
             if (wanted("closed_form_limits")) call out%put("closed_form_limits " &
@@ -445,6 +455,37 @@ contains
 
     !> True if the answer's line `name` (v, x, y: every v<i>, x<i>, y<i>) is
     !> asked for: print=all, or the name in print's list.
+    !> What the answer rests on beyond the counts of its limits: whether the
+    !> order of collisions it rests on is proven (precision=auto's certificate,
+    !> where it holds, checks every decision of its run; else order_premise, in
+    !> the kind that answered), and an answer at tolerance or bounded names
+    !> each premise that makes it so.
+    subroutine write_premises()
+        logical :: proven
+        character(len=80) :: why
+        character(len=:), allocatable :: premises
+        if (precision_word == "auto" .and. auto%certified) then
+            proven = .true.
+        else if (precision_word == "dp" .or. (precision_word == "auto" .and. &
+                auto%answered == "dp")) then
+            call order_premise_in_dp(scene, run, order_work_dp, proven, why)
+        else
+            call order_premise(scene, run, order_work_qp, proven, why)
+        end if
+        if (wanted("order")) call out%put("order "//trim(merge("proven  ", "computed", proven)))
+        if (.not. proven .and. wanted("order_stopped_by")) call out%put("order_stopped_by " &
+            //trim(why))
+        premises = ""
+        if (run%limits%tolerance > 0) premises = premises//" limits_tolerance"
+        if (run%clock%passed) premises = premises//" passed_below_tol"
+        if (any(run%dy < 0) .and. run%status /= status_horizon) &
+            premises = premises//" closing_below_tol"
+        if (run%clock%window_energy >= 0 .or. run%clock%horizon_doubt) &
+            premises = premises//" horizon_margin"
+        if (run%limits%bounded > 0) premises = premises//" limits_bounded"
+        if (len(premises) > 0 .and. wanted("rests_on")) call out%put("rests_on"//premises)
+    end subroutine write_premises
+
     logical function wanted(name)
         character(len=*), intent(in) :: name
         wanted = print_list == ",all," .or. index(print_list, ","//name//",") > 0

@@ -58,6 +58,18 @@ contains
             //"arithmetic's [V]: the run's own rounding (a running bound of the arithmetic " &
             //"it did, along its collisions) plus, where the answer is not exact or " &
             //"certified, the answer's bound; the velocities are printed to its decade"), &
+            entry("order", "not unresolved: proven where exact arithmetic's order of the " &
+            //"collisions the answer rests on is proven (precision=auto's certificate, or " &
+            //"the order check to the first limit, or to the end, in the kind that " &
+            //"answered: docs/collapse.md), computed where the answer rests on the run's " &
+            //"own order"), &
+            entry("order_stopped_by", "order computed only: the decision that stopped the " &
+            //"order check (or that it was not run: a wall, a ring, a horizon, given " &
+            //"velocities, over 200 spheres, or its cost)"), &
+            entry("rests_on", "answer tolerance or bounded: each premise that makes it so " &
+            //"(limits_tolerance, passed_below_tol: a collision closing slower than tol*v0 " &
+            //"passed over, closing_below_tol: a closing rate below tol*v0 left at the end, " &
+            //"horizon_margin: a collision within rounding of t_max, limits_bounded)"), &
             entry("collapses", "with collapse limits: how many limits were taken"), &
             entry("closed_form_limits", "limits taken in closed form"), &
             entry("limits_exact", "limits that are exact (e = 0's pools)"), &

@@ -21,7 +21,7 @@ module sphere_row
         gaps_at_qp => gaps_at_wp, kinetic_energy_qp => kinetic_energy_wp, &
         momentum_qp => momentum_wp, str_qp => str_wp, bounds_t, &
         simulate_certified_qp => simulate_certified_wp, budget_qp => budget_wp, &
-        order_check_qp => order_check_wp, &
+        order_check_qp => order_check_wp, order_premise_qp => order_premise_wp, &
         collapse_proven_qp => collapse_proven_wp, struck_least => struck_least_wp, &
         gaps_at_time_qp => gaps_at_time_wp, velocities_now_qp => velocities_now_wp
 #ifdef SPHERE_ROW_XDP
@@ -31,7 +31,7 @@ module sphere_row
         gaps_at_xdp => gaps_at_wp, kinetic_energy_xdp => kinetic_energy_wp, &
         momentum_xdp => momentum_wp, str_xdp => str_wp, bounds_xdp_t => bounds_t, &
         simulate_certified_xdp => simulate_certified_wp, budget_xdp => budget_wp, &
-        order_check_xdp => order_check_wp, &
+        order_check_xdp => order_check_wp, order_premise_xdp => order_premise_wp, &
         collapse_proven_xdp => collapse_proven_wp, gaps_at_time_xdp => gaps_at_time_wp, &
         velocities_now_xdp => velocities_now_wp
 #endif
@@ -41,7 +41,7 @@ module sphere_row
         gaps_at_dp => gaps_at_wp, kinetic_energy_dp => kinetic_energy_wp, &
         momentum_dp => momentum_wp, str_dp => str_wp, bounds_dp_t => bounds_t, &
         simulate_certified_dp => simulate_certified_wp, budget_dp => budget_wp, &
-        order_check_dp => order_check_wp, &
+        order_check_dp => order_check_wp, order_premise_dp => order_premise_wp, &
         collapse_proven_dp => collapse_proven_wp, gaps_at_time_dp => gaps_at_time_wp, &
         velocities_now_dp => velocities_now_wp
     use sphere_row_engine_sp, only: scene_sp_t => scene_t, run_sp_t => run_t, &
@@ -50,10 +50,10 @@ module sphere_row
         gaps_at_sp => gaps_at_wp, kinetic_energy_sp => kinetic_energy_wp, &
         momentum_sp => momentum_wp, str_sp => str_wp, bounds_sp_t => bounds_t, &
         simulate_certified_sp => simulate_certified_wp, budget_sp => budget_wp, &
-        order_check_sp => order_check_wp, &
+        order_check_sp => order_check_wp, order_premise_sp => order_premise_wp, &
         collapse_proven_sp => collapse_proven_wp, gaps_at_time_sp => gaps_at_time_wp, &
         velocities_now_sp => velocities_now_wp
-    use sphere_row_auto, only: auto_t, simulate_auto, simulate_in_dp
+    use sphere_row_auto, only: auto_t, simulate_auto, simulate_in_dp, order_premise_in_dp
     implicit none
     private
     public :: sp, dp, xdp, qp
@@ -71,7 +71,8 @@ module sphere_row
     public :: scene_sp_t, run_sp_t, event_log_sp_t
     public :: scene_init, scene_check, simulate, gaps_at, kinetic_energy, momentum, str, budget
     public :: bounds_t, bounds_dp_t, bounds_sp_t, simulate_certified, auto_t, simulate_auto
-    public :: simulate_in_dp, collapse_proven, struck_least, order_check, gaps_at_time, &
+    public :: simulate_in_dp, order_premise_in_dp, collapse_proven, struck_least, order_check, order_premise, &
+        gaps_at_time, &
         velocities_now, status_horizon, event_sample
     public :: sphere_row_version
 
@@ -98,6 +99,15 @@ module sphere_row
         module procedure order_check_xdp
 #endif
     end interface order_check
+
+    !> Whether order_check proves the order of collisions a run's answer
+    !> rests on (see order_premise_wp in sphere_row_order.inc).
+    interface order_premise
+        module procedure order_premise_qp, order_premise_dp, order_premise_sp
+#ifdef SPHERE_ROW_XDP
+        module procedure order_premise_xdp
+#endif
+    end interface order_premise
 
     !> Build and check a scene (see scene_init_wp in sphere_row_engine.inc).
     interface scene_init

@@ -1,6 +1,6 @@
 !> Tests of the sphere-row command line, run as a separate process.
 module test_cli
-    use, intrinsic :: iso_fortran_env, only: int64
+    use, intrinsic :: iso_fortran_env, only: int64, real64
     use testsuite, only: error_t, unittest_t, new_unittest, check, read_text, count_lines
     implicit none
     private
@@ -21,6 +21,8 @@ contains
             new_unittest("spheres_table_runs", test_spheres_table), &
             new_unittest("definition_scene_output", test_good_output), &
             new_unittest("print_lines_asked_for", test_print), &
+            new_unittest("answer_says_what_it_rests_on", test_premises), &
+            new_unittest("heavy_sphere_keeps_its_digits", test_heavy_first), &
             new_unittest("namelist_file", test_namelist), &
             new_unittest("event_table", test_events), &
             new_unittest("event_table_file", test_events_file), &
@@ -280,6 +282,65 @@ contains
         end function named_lines
     end subroutine test_print
 
+    !> What an answer rests on, in its own lines: each scene, a line its
+    !> answer must print, and one it must not. `order proven` only where the
+    !> order check reaches the answer's premise: the definition's row (and in
+    !> real(8), and precision=auto's certificate), a certified cycle it
+    !> proves (p = 5, e = 0.258); computed where it does not (p = 4 of mixed
+    !> masses: real(16) leaves exact arithmetic's order at 587 collisions, the
+    !> check stops at 271, the limit is at 11,734), or where it does not
+    !> apply (a ring). An answer at tolerance names why (a collision passed
+    !> over below tol: with tol=0 the row is certified).
+    subroutine test_premises(error)
+        type(error_t), allocatable, intent(out) :: error
+        character(len=*), parameter :: cases(*, *) = reshape([character(len=60) :: &
+            "e=0.2", "order proven", "rests_on", &
+            "e=0.2 precision=dp", "order proven", "order_stopped_by", &
+            "e=0.2 precision=auto", "order proven", "order computed", &
+            "p=5 e=0.258", "answer certified", "order computed", &
+            "p=5 e=0.258", "order proven", "rests_on", &
+            "masses=1,2,1.5,1 e=0.1", "answer certified", "order proven", &
+            "masses=1,2,1.5,1 e=0.1", "order computed", "rests_on", &
+            "masses=1,2,1.5,1 e=0.1", "order_stopped_by which of gaps 3 and 1 closes", "", &
+            "p=4 ring=10 velocities=1,0,0,-1 e=0.5", "order computed", "order proven", &
+            "p=4 ring=10 velocities=1,0,0,-1 e=0.5", "order_stopped_by given velocities", "", &
+            "masses=10,1,1,1 e=0.2", "answer tolerance", "limits_tolerance 1", &
+            "masses=10,1,1,1 e=0.2", "rests_on passed_below_tol", "closing_below_tol", &
+            "masses=10,1,1,1 e=0.2 tol=0", "answer certified", "rests_on", &
+            "p=20 e=0.5", "rests_on limits_tolerance passed_below_tol", "order proven", &
+            "p=100 e=0.5", "order_stopped_by not checked: its cost", "order proven"], [3, 15])
+        integer :: i, status
+        character(len=:), allocatable :: out, err
+        do i = 1, size(cases, 2)
+            call run_cli(trim(cases(1, i)), status, out, err)
+            call check(error, status == 0, trim(cases(1, i))//": exit status")
+            call check(error, index(out, nl//trim(cases(2, i))) > 0, trim(cases(1, i)) &
+                //": no line '"//trim(cases(2, i))//"' in"//nl//out)
+            if (len_trim(cases(3, i)) > 0) call check(error, index(out, nl//trim(cases(3, i))) &
+                == 0, trim(cases(1, i))//": a line '"//trim(cases(3, i))//"' in"//nl//out)
+            if (allocated(error)) return
+        end do
+    end subroutine test_premises
+
+    !> A heavy sphere 1 standing in for a wall (masses 1e100, 1, 1, 1): its
+    !> own rounding is one shift of every velocity, not a bound that grows
+    !> with the mass ratio, so the answer keeps real(16)'s digits; the
+    !> velocities are tools/replay's (450 digits) to the 16 printed here.
+    subroutine test_heavy_first(error)
+        type(error_t), allocatable, intent(out) :: error
+        integer :: status, at
+        real(real64) :: bound
+        character(len=:), allocatable :: out, err
+        call run_cli("masses=1e100,1,1,1 e=0.5 print=answer,v_bound,v", status, out, err)
+        call check(error, status == 0 .and. index(out, "answer exact") == 1, out//err)
+        if (allocated(error)) return
+        at = index(out, "v_bound ") + len("v_bound ")
+        read (out(at:index(out(at:), nl) + at - 2), *) bound
+        call check(error, bound < 1.0e-20_real64, "masses=1e100,1,1,1: v_bound "//out)
+        call check(error, index(out, "v2 1.010009765625000") > 0 .and. &
+            index(out, "v4 1.110717773437500") > 0, "masses=1e100,1,1,1: velocities "//out)
+    end subroutine test_heavy_first
+
     !> A namelist file gives the scene; key=value after it overrides.
     subroutine test_namelist(error)
         type(error_t), allocatable, intent(out) :: error
@@ -304,9 +365,11 @@ contains
         call run_cli("e=1 events=yes", status, out, err)
         call check(error, status == 0, "events=yes: exit status")
         call check(error, index(out, "event"//achar(9)//"kind") > 0, "events=yes: no header")
-        ! 3 collision lines + start + header + 4 + 4 + 3 + 6 quantity lines
-        ! (collisions, t_end, status, precision, answer, v_bound; v, x; y)
-        call check(error, count_lines(out) == 3 + 4 + 4 + 3 + 1 + 1 + 6, &
+        ! 3 collision lines + start + header + 4 + 4 + 3 + 8 quantity lines
+        ! (collisions, t_end, status, precision, answer, v_bound, order,
+        ! order_stopped_by: a rate of exactly 0 within its rounding's bound;
+        ! v, x; y)
+        call check(error, count_lines(out) == 3 + 4 + 4 + 3 + 1 + 1 + 8, &
             "events=yes: wrong number of lines")
     end subroutine test_events
 

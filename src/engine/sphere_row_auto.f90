@@ -13,10 +13,11 @@ module sphere_row_auto
         simulate_certified_wp
     use sphere_row_engine_dp, only: scene_dp_t => scene_t, run_dp_t => run_t, &
         bounds_dp_t => bounds_t, event_log_dp_t => event_log_t, &
-        certified_dp => simulate_certified_wp, simulate_dp => simulate_wp
+        certified_dp => simulate_certified_wp, simulate_dp => simulate_wp, &
+        order_premise_dp => order_premise_wp
     implicit none
     private
-    public :: auto_t, simulate_auto, simulate_in_dp
+    public :: auto_t, simulate_auto, simulate_in_dp, order_premise_in_dp
 
     !> Which precision answered a scene and how far its results may be from
     !> exact arithmetic's.
@@ -154,6 +155,25 @@ contains
         end if
         call from_dp(run_low, run)
     end subroutine simulate_in_dp
+
+    !> order_premise for a run made in real(8) (simulate_in_dp, or
+    !> simulate_auto's answer in real(8)): the check in real(8), the order
+    !> that run followed (of `run`, its collisions and its first limit).
+    subroutine order_premise_in_dp(scene, run, work_most, proven, why)
+        type(scene_t), intent(in) :: scene
+        type(run_t), intent(in) :: run
+        real(qp), intent(in) :: work_most
+        logical, intent(out) :: proven
+        character(len=*), intent(out) :: why
+        type(scene_dp_t) :: low
+        type(run_dp_t) :: run_low
+        call to_dp(scene, low)
+        run_low%n = run%n
+        run_low%limits%n = run%limits%n
+        run_low%limits%at = run%limits%at
+        call order_premise_dp(low, run_low, real(min(work_most, real(huge(1.0_dp), qp)), dp), &
+            proven, why)
+    end subroutine order_premise_in_dp
 
     !> Every value of the scene, and the sums the engine forms of them (mass
     !> pairs, the row's length, its time scale), is a finite real64, and every

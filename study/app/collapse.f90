@@ -10,7 +10,7 @@ program c12_collapse
     use, intrinsic :: iso_fortran_env, only: int64, error_unit
     use sphere_row, only: qp, scene_t, run_t, simulate, str, itoa, real_str, answer_word, &
         answer_exact, answer_certified, answer_tolerance, answer_bounded, answer_unresolved, &
-        order_check
+        order_premise
     use sphere_row_survey, only: survey_t, survey_open, survey_close, survey_scene, &
         check_invariants, scene_command
     use sphere_row_sorting, only: sort
@@ -39,7 +39,7 @@ program c12_collapse
         real(qp) :: bound = 0
         real :: seconds = 0
         !> order_check proves exact arithmetic's order of collisions as far as
-        !> the run went: to its end, or to its first limit (check_order).
+        !> the run went: to its end, or to its first limit (order_premise).
         logical :: order_checked = .false.
         type(row_t) :: row
     end type outcome_t
@@ -133,6 +133,7 @@ contains
         type(outcome_t), intent(out) :: result
         type(run_t) :: run
         character(len=:), allocatable :: why
+        character(len=80) :: why_not
         integer(int64) :: c0, c1, rate
         integer :: j, at
         character(len=2000) :: groups
@@ -148,7 +149,7 @@ contains
         result%why = why
         if (scene%closed_form_limits .and. (run%answer == answer_exact .or. &
                 run%answer == answer_certified)) then
-            call check_order(scene, run, result%order_checked)
+            call order_premise(scene, run, huge(1.0_qp), result%order_checked, why_not)
         end if
         if (run%answer /= answer_unresolved .or. .not. scene%closed_form_limits) return
         call result%row%add(index)
@@ -168,25 +169,6 @@ contains
         call result%row%add(trim(groups))
         call result%row%add(scene_command(scene))
     end subroutine one_run
-
-    !> Whether order_check proves exact arithmetic's order of collisions as
-    !> far as `run` went: every collision, and the end, for a run that took
-    !> no limit; the collisions before its first limit otherwise (a limit's
-    !> state is not followed). The run's own order is not compared.
-    subroutine check_order(scene, run, checked)
-        type(scene_t), intent(in) :: scene
-        type(run_t), intent(in) :: run
-        logical, intent(out) :: checked
-        character(len=80) :: why
-        integer :: n
-        if (run%limits%n == 0) then
-            call order_check(scene, run%n + 1, n, why)
-            checked = n == run%n .and. why == "separated"
-        else
-            call order_check(scene, run%limits%at, n, why)
-            checked = n >= run%limits%at
-        end if
-    end subroutine check_order
 
     !> The survey table, the table per row length, the unresolved rows and the
     !> answers.
@@ -263,7 +245,9 @@ contains
                 //answer_word(a)//" and for which order_check proves exact arithmetic's " &
                 //"order of collisions (each decision beyond the bound on its rounding, " &
                 //"to first order) as far as the run went: every collision and the end, " &
-                //"or, where it took a limit, the collisions before its first")
+                //"or, where it took a limit, the collisions before its first (sphere-row's " &
+                //"order proven; the rest, the difference, rest on the run's own order: " &
+                //"order computed)")
         end do
         call write_answer(unit, "collapse.v_bound_max", real_str(bound_max(every, n), 3), &
             "-", "-", "-", "the largest bound on the final velocities of a row with an " &
