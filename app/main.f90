@@ -453,8 +453,6 @@ contains
         if (wanted("y")) call write_numbered("y", run%y)
     end subroutine write_run
 
-    !> True if the answer's line `name` (v, x, y: every v<i>, x<i>, y<i>) is
-    !> asked for: print=all, or the name in print's list.
     !> What the answer rests on beyond the counts of its limits: whether the
     !> order of collisions it rests on is proven (precision=auto's certificate,
     !> where it holds, checks every decision of its run; else order_premise, in
@@ -478,14 +476,18 @@ contains
         premises = ""
         if (run%limits%tolerance > 0) premises = premises//" limits_tolerance"
         if (run%clock%passed) premises = premises//" passed_below_tol"
-        if (any(run%dy < 0) .and. run%status /= status_horizon) &
+        if (any(run%dy < 0) .and. run%status /= status_horizon) then
             premises = premises//" closing_below_tol"
-        if (run%clock%window_energy >= 0 .or. run%clock%horizon_doubt) &
+        end if
+        if (run%clock%window_energy >= 0 .or. run%clock%horizon_doubt) then
             premises = premises//" horizon_margin"
+        end if
         if (run%limits%bounded > 0) premises = premises//" limits_bounded"
         if (len(premises) > 0 .and. wanted("rests_on")) call out%put("rests_on"//premises)
     end subroutine write_premises
 
+    !> True if the answer's line `name` (v, x, y: every v<i>, x<i>, y<i>) is
+    !> asked for: print=all, or the name in print's list.
     logical function wanted(name)
         character(len=*), intent(in) :: name
         wanted = print_list == ",all," .or. index(print_list, ","//name//",") > 0

@@ -71,9 +71,8 @@ module sphere_row
     public :: scene_sp_t, run_sp_t, event_log_sp_t
     public :: scene_init, scene_check, simulate, gaps_at, kinetic_energy, momentum, str, budget
     public :: bounds_t, bounds_dp_t, bounds_sp_t, simulate_certified, auto_t, simulate_auto
-    public :: simulate_in_dp, order_premise_in_dp, collapse_proven, struck_least, order_check, order_premise, &
-        gaps_at_time, &
-        velocities_now, status_horizon, event_sample
+    public :: simulate_in_dp, order_premise_in_dp, collapse_proven, struck_least, order_check, &
+        order_premise, gaps_at_time, velocities_now, status_horizon, event_sample
     public :: sphere_row_version
 
     !> The package's version, as fpm.toml states it (a test compares them).

@@ -164,7 +164,8 @@ contains
         type(run_t), intent(in) :: run
         real(qp), intent(in) :: work_most
         logical, intent(out) :: proven
-        character(len=*), intent(out) :: why
+        !> (order_check's messages fit in 80 characters)
+        character(len=80), intent(out) :: why
         type(scene_dp_t) :: low
         type(run_dp_t) :: run_low
         call to_dp(scene, low)
