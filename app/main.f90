@@ -10,7 +10,8 @@ program sphere_row_main
     use sphere_row_scene_keys, only: add_scene_keys, add_state_keys, scene_from_cli, &
         check_scene_in_dp
     use sphere_row_error, only: error_t, fatal_error
-    use sphere_row_format, only: short_text, real_text, int_text, number_text_length
+    use sphere_row_format, only: short_text, real_text, int_text, number_text_length, &
+        put_exponent
     use sphere_row_read, only: printable, read_real
     use sphere_row_system, only: text_out_t, stderr_is_terminal, system_error_text, path_kind, &
         path_missing, path_regular
@@ -550,19 +551,8 @@ contains
         integer, intent(in) :: q, place
         character(len=number_text_length), intent(out) :: text
         integer, intent(out) :: length
-        character(len=number_text_length) :: digits_text
-        integer :: n, places
         call int_text(int(q, int64), text, length)
-        call int_text(int(abs(place), int64), digits_text, n)
-        places = merge(2, 4, abs(place) < 100)
-        text(length + 1:length + 2) = merge("E+", "E-", place >= 0)
-        length = length + 2
-        if (n < places) then
-            text(length + 1:length + places - n) = "0000"
-            length = length + places - n
-        end if
-        text(length + 1:length + n) = digits_text(:n)
-        length = length + n
+        call put_exponent(place, merge(2, 4, abs(place) < 100), text, length)
     end subroutine power_text
 
     !> Sphere i's bound: its own (run%v_bounds, its rounding included) where

@@ -7,7 +7,7 @@ module sphere_row_format
     use sphere_row_kinds, only: qp
     implicit none
     private
-    public :: real_str, short_text, itoa, real_text, int_text, number_text_length
+    public :: real_str, short_text, itoa, real_text, int_text, number_text_length, put_exponent
 
     !> Length of the buffers of real_text (enough for up to 52 digits) and
     !> int_text.
@@ -122,8 +122,8 @@ contains
         integer, intent(in) :: digits
         character(len=number_text_length), intent(out) :: text
         integer, intent(out) :: length
-        character(len=number_text_length) :: mantissa, e
-        integer :: power, ew, ne, at
+        character(len=number_text_length) :: mantissa
+        integer :: power, ew, at
         if (.not. finite(x)) then
             if (x /= x) then
                 text = "nan"
@@ -136,13 +136,6 @@ contains
             ew = 2
             if (beyond_two_places(x)) ew = 4
             call decimal_digits(abs(x), digits, mantissa, power)
-            if (abs(power) < 100) then
-                ! (two places, the exponent of every ordinary number)
-                e(1:2) = digit_pairs(2*abs(power) + 1:2*abs(power) + 2)
-                ne = 2
-            else
-                call int_text(int(abs(power), int64), e, ne)
-            end if
             ! sign, d.ddd, E, sign, the exponent's places: put in place (the
             ! text of every number of a long row's answer)
             at = 0
@@ -154,18 +147,37 @@ contains
             text(at + 2:at + 2) = "."
             text(at + 3:at + digits + 1) = mantissa(2:digits)
             at = at + digits + 1
-            text(at + 1:at + 2) = merge("E+", "E-", power >= 0)
-            at = at + 2
-            if (ne < ew) then
-                text(at + 1:at + ew - ne) = "000"
-                at = at + ew - ne
-            end if
-            text(at + 1:at + ne) = e(:ne)
-            at = at + ne
+            call put_exponent(power, ew, text, at)
             text(at + 1:) = ""
             length = at
         end if
     end subroutine real_text
+
+    !> `E`, the sign and |power| in at least `places` places (2 or 4), put
+    !> into `text` after its first `length` characters; `length` moves past
+    !> them: 1.5E-02's and real_str's exponent.
+    pure subroutine put_exponent(power, places, text, length)
+        integer, intent(in) :: power, places
+        character(len=number_text_length), intent(inout) :: text
+        integer, intent(inout) :: length
+        character(len=number_text_length) :: e
+        integer :: ne
+        if (abs(power) < 100) then
+            ! (two places, the exponent of every ordinary number)
+            e(1:2) = digit_pairs(2*abs(power) + 1:2*abs(power) + 2)
+            ne = 2
+        else
+            call int_text(int(abs(power), int64), e, ne)
+        end if
+        text(length + 1:length + 2) = merge("E+", "E-", power >= 0)
+        length = length + 2
+        if (ne < places) then
+            text(length + 1:length + places - ne) = "000"
+            length = length + places - ne
+        end if
+        text(length + 1:length + ne) = e(:ne)
+        length = length + ne
+    end subroutine put_exponent
 
     !> x is neither infinite nor a NaN: for binary128, its exponent field is
     !> not all ones, told from its bits (real(16) comparisons are calls).
