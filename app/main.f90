@@ -455,25 +455,12 @@ contains
     end subroutine write_run
 
     !> What the answer rests on beyond the counts of its limits: whether the
-    !> order of collisions it rests on is proven (precision=auto's certificate,
-    !> where it holds, checks every decision of its run; else order_premise, in
-    !> the kind that answered), and an answer at tolerance or bounded names
-    !> each premise that makes it so.
+    !> order of collisions it rests on is proven (write_order, run only for
+    !> its lines), and an answer at tolerance or bounded names each premise
+    !> that makes it so.
     subroutine write_premises()
-        logical :: proven
-        character(len=80) :: why
         character(len=:), allocatable :: premises
-        if (precision_word == "auto" .and. auto%certified) then
-            proven = .true.
-        else if (precision_word == "dp" .or. (precision_word == "auto" .and. &
-                auto%answered == "dp")) then
-            call order_premise_in_dp(scene, run, order_work_dp, proven, why)
-        else
-            call order_premise(scene, run, order_work_qp, proven, why)
-        end if
-        if (wanted("order")) call out%put("order "//trim(merge("proven  ", "computed", proven)))
-        if (.not. proven .and. wanted("order_stopped_by")) call out%put("order_stopped_by " &
-            //trim(why))
+        if (wanted("order") .or. wanted("order_stopped_by")) call write_order()
         premises = ""
         if (run%limits%tolerance > 0) premises = premises//" limits_tolerance"
         if (run%clock%passed) premises = premises//" passed_below_tol"
@@ -486,6 +473,26 @@ contains
         if (run%limits%bounded > 0) premises = premises//" limits_bounded"
         if (len(premises) > 0 .and. wanted("rests_on")) call out%put("rests_on"//premises)
     end subroutine write_premises
+
+    !> Whether exact arithmetic's order of the collisions the answer rests on
+    !> is proven: by precision=auto's certificate, where it holds (it checks
+    !> every decision of its run), else by order_premise in the kind that
+    !> answered.
+    subroutine write_order()
+        logical :: proven
+        character(len=80) :: why
+        if (precision_word == "auto" .and. auto%certified) then
+            proven = .true.
+        else if (precision_word == "dp" .or. (precision_word == "auto" .and. &
+                auto%answered == "dp")) then
+            call order_premise_in_dp(scene, run, order_work_dp, proven, why)
+        else
+            call order_premise(scene, run, order_work_qp, proven, why)
+        end if
+        if (wanted("order")) call out%put("order "//trim(merge("proven  ", "computed", proven)))
+        if (.not. proven .and. wanted("order_stopped_by")) call out%put("order_stopped_by " &
+            //trim(why))
+    end subroutine write_order
 
     !> True if the answer's line `name` (v, x, y: every v<i>, x<i>, y<i>) is
     !> asked for: print=all, or the name in print's list.
