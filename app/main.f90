@@ -11,7 +11,7 @@ program sphere_row_main
         check_scene_in_dp
     use sphere_row_error, only: error_t, fatal_error
     use sphere_row_format, only: short_text, real_text, int_text, number_text_length, &
-        put_exponent
+        put_exponent, finite
     use sphere_row_read, only: printable, read_real
     use sphere_row_system, only: text_out_t, stderr_is_terminal, system_error_text, path_kind, &
         path_missing, path_regular
@@ -340,19 +340,6 @@ contains
             //"times (t_end = "//short_text(t1, 3)//"/v0) overflow "//kind_name &
             //"; allowed v0 >= "//short_text(t1/big, 3, "up"))
     end subroutine refuse_time
-
-    !> x is a finite number (not an infinity, not a NaN): for binary128 its
-    !> exponent field is not all ones, told from its bits (a comparison of
-    !> real(16) is a call, three a sphere of a long row's answer).
-    elemental logical function finite(x)
-        real(qp), intent(in) :: x
-        integer, parameter :: i16 = selected_int_kind(38)
-        if (digits(x) == 113 .and. maxexponent(x) == 16384) then
-            finite = iand(shiftr(transfer(x, 1_i16), 112), 32767_i16) /= 32767_i16
-        else
-            finite = abs(x) <= huge(x)
-        end if
-    end function finite
 
     !> Every element of xs is finite, looked at in place (a long row's
     !> answer holds millions: no array made of them).

@@ -7,7 +7,8 @@ module sphere_row_format
     use sphere_row_kinds, only: qp
     implicit none
     private
-    public :: real_str, short_text, itoa, real_text, int_text, number_text_length, put_exponent
+    public :: real_str, short_text, itoa, real_text, int_text, number_text_length, put_exponent, &
+        finite
 
     !> Length of the buffers of real_text (enough for up to 52 digits) and
     !> int_text.
@@ -180,8 +181,9 @@ contains
     end subroutine put_exponent
 
     !> x is neither infinite nor a NaN: for binary128, its exponent field is
-    !> not all ones, told from its bits (real(16) comparisons are calls).
-    pure logical function finite(x)
+    !> not all ones, told from its bits (real(16) comparisons are calls: three
+    !> a sphere of a long row's answer).
+    elemental logical function finite(x)
         real(qp), intent(in) :: x
         integer, parameter :: i16 = selected_int_kind(38)
         if (digits(x) == 113 .and. maxexponent(x) == 16384) then
