@@ -115,6 +115,7 @@ METHODS := $(RESULTS)/methods_work_precision.tsv $(RESULTS)/methods_stability.ts
       $(TIMING)/methods_costs.tsv $(TIMING)/methods_platform.tsv
 COLLAPSE := $(RESULTS)/collapse_survey.tsv $(RESULTS)/collapse_by_p.tsv \
       $(RESULTS)/collapse_answers.tsv $(RESULTS)/collapse_unanswered.tsv \
+      $(RESULTS)/collapse_order_computed.tsv \
       $(TIMING)/collapse_survey.tsv
 ECRIT := $(RESULTS)/ecrit.tsv $(RESULTS)/ecrit_answers.tsv $(RESULTS)/ecrit_map.tsv \
       $(RESULTS)/ecrit_robust.tsv

@@ -5,7 +5,7 @@ program sphere_row_main
         status_invalid, status_normal, event_collision, event_collapse, itoa, auto_t, &
         simulate_auto, simulate_in_dp, answer_word, answer_certified, answer_unresolved, &
         answer_exact, real_str, collapse_proven, budget, sphere_row_version, order_premise, &
-        order_premise_in_dp, status_horizon
+        order_premise_in_dp
     use sphere_row_cli, only: cli_t, read_command_line, fail
     use sphere_row_scene_keys, only: add_scene_keys, add_state_keys, scene_from_cli, &
         check_scene_in_dp
@@ -65,6 +65,7 @@ program sphere_row_main
     if (allocated(error)) call fail(cli%name, error)
     call start_watch(error)
     if (allocated(error)) call fail(cli%name, error)
+    if (wanted("order") .or. wanted("order_stopped_by")) scene%keep_order = order_kept()
     call run_scene(scene, run, watch)
     call check_run(error)
     if (allocated(error)) call stop_on(error)
@@ -444,22 +445,22 @@ contains
     !> What the answer rests on beyond the counts of its limits: whether the
     !> order of collisions it rests on is proven (write_order, run only for
     !> its lines), and an answer at tolerance or bounded names each premise
-    !> that makes it so.
+    !> that makes it so (run%rests_on, judged with the answer).
     subroutine write_premises()
-        character(len=:), allocatable :: premises
         if (wanted("order") .or. wanted("order_stopped_by")) call write_order()
-        premises = ""
-        if (run%limits%tolerance > 0) premises = premises//" limits_tolerance"
-        if (run%clock%passed) premises = premises//" passed_below_tol"
-        if (any(run%dy < 0) .and. run%status /= status_horizon) then
-            premises = premises//" closing_below_tol"
-        end if
-        if (run%clock%window_energy >= 0 .or. run%clock%horizon_doubt) then
-            premises = premises//" horizon_margin"
-        end if
-        if (run%limits%bounded > 0) premises = premises//" limits_bounded"
-        if (len(premises) > 0 .and. wanted("rests_on")) call out%put("rests_on"//premises)
+        if (.not. allocated(run%rests_on)) return
+        if (len(run%rests_on) > 0 .and. wanted("rests_on")) call out%put("rests_on"//run%rests_on)
     end subroutine write_premises
+
+    !> The collisions whose gaps the run keeps for write_order: as many as
+    !> the order check's budget lets it follow (real(8)'s where the run may
+    !> answer in real(8)).
+    integer function order_kept() result(n)
+        real(qp) :: work
+        work = order_work_qp
+        if (precision_word /= "qp") work = order_work_dp
+        n = int(min(work/real(scene%p, qp)**2 + 1, real(huge(n), qp)))
+    end function order_kept
 
     !> Whether exact arithmetic's order of the collisions the answer rests on
     !> is proven: by precision=auto's certificate, where it holds (it checks

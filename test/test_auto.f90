@@ -4,7 +4,7 @@
 module test_auto
     use sphere_row, only: qp, dp, scene_t, run_t, event_log_t, scene_init, simulate, &
         scene_dp_t, run_dp_t, event_log_dp_t, bounds_dp_t, simulate_certified, auto_t, &
-        simulate_auto, itoa, order_check
+        simulate_auto, itoa, order_check, order_premise
     use testsuite, only: error_t, unittest_t, new_unittest, check, cases
     implicit none
     private
@@ -30,7 +30,8 @@ contains
             new_unittest("auto_equals_real128", test_many_values), &
             new_unittest("auto_at_extreme_scales", test_extreme_scales), &
             new_unittest("auto_long_row_in_real128_once", test_long_row), &
-            new_unittest("order_check_stops_where_exact_order_leaves", test_order_check) &
+            new_unittest("order_check_stops_where_exact_order_leaves", test_order_check), &
+            new_unittest("order_premise_is_the_runs_own_order", test_order_premise) &
             ]
     end function collect_auto
 
@@ -306,5 +307,53 @@ contains
         call check(error, n == 0 .and. index(why, "more than 200 spheres") > 0, &
             "p=201: order checked to "//itoa(n)//" ("//trim(why)//"); expected a refusal")
     end subroutine test_order_check
+
+    !> order_premise proves the order the run itself took. p = 5, e = 0.258
+    !> certifies its limit after 469 collisions, those from the 311th in the
+    !> whole row followed on its own scale; a row of mixed masses follows so
+    !> a group that does not begin at sphere 1, to its first limit on spheres
+    !> 3 to 6 (the run keeps a followed group's collisions in the row's
+    !> numbers). A run that kept no order is not checked, and one whose kept
+    !> gap at a collision (the 5th, and the last, in the followed group) is
+    !> not exact arithmetic's is stopped there.
+    subroutine test_order_premise(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(scene_t) :: scenes(2)
+        type(run_t) :: run
+        character(len=80) :: why
+        character(len=:), allocatable :: what
+        logical :: proven
+        integer :: stat, i, j, at(2)
+        character(len=200) :: msg
+        call scene_init(scenes(1), stat, msg, p=5, e=0.258_qp)
+        call scene_init(scenes(2), stat, msg, p=6, e=0.311_qp, masses=[1.93_qp, 0.77_qp, &
+            1.25_qp, 1.11_qp, 0.32_qp, 1.38_qp], gaps=[3.0_qp, 0.2_qp, 1.0_qp, 0.05_qp, 0.2_qp])
+        do i = 1, size(scenes)
+            what = "p="//itoa(scenes(i)%p)//" e="//merge("0.258", "0.311", i == 1)
+            call simulate(scenes(i), run)
+            call order_premise(scenes(i), run, huge(1.0_qp), proven, why)
+            call check(error, .not. proven .and. index(why, "did not keep") > 0, &
+                what//" without keep_order: "//trim(why)//"; expected not checked")
+            if (allocated(error)) return
+            scenes(i)%keep_order = huge(1)
+            call simulate(scenes(i), run)
+            call order_premise(scenes(i), run, huge(1.0_qp), proven, why)
+            call check(error, proven .and. run%limits%certified > 0 .and. &
+                run%order_n == run%limits%at, what//": limit after "//itoa(run%limits%at)// &
+                " collisions, "//itoa(run%order_n)//" kept, proven "//merge("yes", "no ", &
+                proven)//" ("//trim(why)//"); expected every one kept, and proven")
+            if (allocated(error)) return
+            at = [5, run%limits%at]
+            do j = 1, size(at)
+                run%order_gaps(at(j)) = 1 + modulo(run%order_gaps(at(j)), scenes(i)%p - 1)
+                call order_premise(scenes(i), run, huge(1.0_qp), proven, why)
+                call check(error, .not. proven .and. index(why, "the run's collision " &
+                    //itoa(at(j))//" closed gap") > 0, what//", the run's gap at collision " &
+                    //itoa(at(j))//" changed: "//trim(why)//"; expected the check to stop there")
+                if (allocated(error)) return
+                call simulate(scenes(i), run)
+            end do
+        end do
+    end subroutine test_order_premise
 
 end module test_auto

@@ -290,7 +290,9 @@ contains
     !> masses: real(16) leaves exact arithmetic's order at 587 collisions, the
     !> check stops at 271, the limit is at 11,734), or where it does not
     !> apply (a ring). An answer at tolerance names why (a collision passed
-    !> over below tol: with tol=0 the row is certified).
+    !> over below tol: with tol=0 the row is certified), in real(8) as in
+    !> real(16) (the premises are judged with the answer, in the kind that
+    !> answered).
     subroutine test_premises(error)
         type(error_t), allocatable, intent(out) :: error
         character(len=*), parameter :: cases(*, *) = reshape([character(len=60) :: &
@@ -308,7 +310,8 @@ contains
             "masses=10,1,1,1 e=0.2", "rests_on passed_below_tol", "closing_below_tol", &
             "masses=10,1,1,1 e=0.2 tol=0", "answer certified", "rests_on", &
             "p=20 e=0.5", "rests_on limits_tolerance passed_below_tol", "order proven", &
-            "p=100 e=0.5", "order_stopped_by not checked: its cost", "order proven"], [3, 15])
+            "p=20 e=0.5 precision=dp", "rests_on limits_tolerance passed_below_tol", "", &
+            "p=100 e=0.5", "order_stopped_by not checked: its cost", "order proven"], [3, 16])
         integer :: i, status
         character(len=:), allocatable :: out, err
         do i = 1, size(cases, 2)

@@ -172,6 +172,8 @@ contains
         run_low%n = run%n
         run_low%limits%n = run%limits%n
         run_low%limits%at = run%limits%at
+        run_low%order_n = run%order_n
+        if (allocated(run%order_gaps)) run_low%order_gaps = run%order_gaps(:run%order_n)
         call order_premise_dp(low, run_low, real(min(work_most, real(huge(1.0_dp), qp)), dp), &
             proven, why)
     end subroutine order_premise_in_dp
@@ -221,6 +223,7 @@ contains
         low%e_wall = real(scene%e_wall, dp)
         low%ring = real(scene%ring, dp)
         low%t_max = real(scene%t_max, dp)
+        low%keep_order = scene%keep_order
     end subroutine to_dp
 
     !> A real64 run's results in a real128 run.
@@ -242,7 +245,10 @@ contains
         run%limits%last = low%limits%last
         run%limits%t = real(low%limits%t, qp)
         run%limits%at = low%limits%at
+        run%order_n = low%order_n
+        if (allocated(low%order_gaps)) run%order_gaps = low%order_gaps(:low%order_n)
         run%answer = low%answer
+        if (allocated(low%rests_on)) run%rests_on = low%rests_on
         run%v_bound = real(low%v_bound, qp)
         if (allocated(low%v_bounds)) run%v_bounds = real(low%v_bounds, qp)
         if (allocated(low%v_rounding)) run%v_rounding = real(low%v_rounding, qp)

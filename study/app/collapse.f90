@@ -41,6 +41,9 @@ program c12_collapse
         !> order_check proves exact arithmetic's order of collisions as far as
         !> the run went: to its end, or to its first limit (order_premise).
         logical :: order_checked = .false.
+        !> The row's line of collapse_unanswered.tsv (unresolved), or of
+        !> collapse_order_computed.tsv (exact or certified, its order not
+        !> proven).
         type(row_t) :: row
     end type outcome_t
     type(outcome_t), allocatable :: outcome(:, :)
@@ -50,8 +53,10 @@ program c12_collapse
         "Collapse in general rows: random rows run to their end by every collapse rule,"//nl// &
         "and the first n_before of them by the fallback rule alone. Writes"//nl// &
         "OUT/collapse_survey.tsv (rows per answer, bounds, collisions),"//nl// &
-        "OUT/collapse_by_p.tsv, OUT/collapse_answers.tsv and OUT/collapse_unanswered.tsv"//nl// &
+        "OUT/collapse_by_p.tsv, OUT/collapse_answers.tsv, OUT/collapse_unanswered.tsv"//nl// &
         "(every row left unresolved, its active groups and the bound reached on them),"//nl// &
+        "OUT/collapse_order_computed.tsv (every exact or certified row whose order of"//nl// &
+        "collisions the check does not prove, and the decision that stopped it)"//nl// &
         "and the runs' wall times in OUT/timing/collapse_survey.tsv.")
     call cli%add_int("n", "1000", "random rows run by every collapse rule", lo=1)
     call cli%add_int("n_before", "300", "of these, rows run with the fallback rule alone", lo=0)
@@ -112,6 +117,8 @@ contains
             scene = rows(i)
             scene%closed_form_limits = rule == every
             if (rule == fallback) scene%vtol = 0
+            ! (the run keeps its order, which the order check must match)
+            if (rule == every) scene%keep_order = huge(1)
             call one_run(scene, i, outcome(rule, i))
         end do
         !$omp end parallel do
@@ -150,6 +157,15 @@ contains
         if (scene%closed_form_limits .and. (run%answer == answer_exact .or. &
                 run%answer == answer_certified)) then
             call order_premise(scene, run, huge(1.0_qp), result%order_checked, why_not)
+            if (.not. result%order_checked) then
+                call result%row%add(index)
+                call result%row%add(scene%p)
+                call result%row%add(scene%e)
+                call result%row%add(answer_word(run%answer))
+                call result%row%add(merge(run%limits%at, run%n, run%limits%n > 0))
+                call result%row%add(trim(why_not))
+                call result%row%add(scene_command(scene))
+            end if
         end if
         if (run%answer /= answer_unresolved .or. .not. scene%closed_form_limits) return
         call result%row%add(index)
@@ -173,9 +189,8 @@ contains
     !> The survey table, the table per row length, the unresolved rows and the
     !> answers.
     subroutine write_tables()
-        integer :: unit, unit_time, stat, rule, p, a, rows_of, j, k
+        integer :: unit, unit_time, stat, rule, p, a, rows_of, k
         character(len=300) :: msg
-        type(row_t), allocatable :: lines(:)
         character(len=*), parameter :: answer_columns = "exact"//tab//"certified"//tab// &
             "tolerance"//tab//"bounded"//tab//"unresolved"
         call open_table(out, "collapse_survey.tsv", "rule"//tab//"scenes"//tab// &
@@ -209,21 +224,15 @@ contains
                 answer_counts(every, 1, n, p)
         end do
         call close_tables([unit])
-        call open_table(out, "collapse_unanswered.tsv", "row"//tab//"p"//tab//"e[1]"//tab// &
+        call write_picked("collapse_unanswered.tsv", "row"//tab//"p"//tab//"e[1]"//tab// &
             "mass_ratio[1]"//tab//"closed_gaps"//tab//"v_bound[V]"//tab//"active"//tab// &
-            "command", unit, stat, msg)
-        call stop_unless_normal(stat, msg)
-        ! the unresolved rows picked one by one: pack of a component of a
-        ! section of outcome would copy the section to an array temporary
-        allocate (lines(count(outcome(every, :)%answer == answer_unresolved)))
-        k = 0
-        do j = 1, size(outcome, 2)
-            if (outcome(every, j)%answer /= answer_unresolved) cycle
-            k = k + 1
-            lines(k) = outcome(every, j)%row
-        end do
-        call write_rows(unit, lines)
-        call close_tables([unit])
+            "command", outcome(every, :)%answer == answer_unresolved)
+        ! (the collisions the answer rests on: every one, or those before the
+        ! first limit)
+        call write_picked("collapse_order_computed.tsv", "row"//tab//"p"//tab//"e[1]"//tab// &
+            "answer"//tab//"premise_collisions"//tab//"order_stopped_by"//tab//"command", &
+            (outcome(every, :)%answer == answer_exact .or. outcome(every, :)%answer == &
+            answer_certified) .and. .not. outcome(every, :)%order_checked)
         call open_table(out, "collapse_answers.tsv", answer_header, unit, stat, msg)
         call stop_unless_normal(stat, msg)
         do a = answer_exact, answer_unresolved
@@ -264,6 +273,29 @@ contains
             //str(slack)//" + "//str(per_collision)//" n epsilon of their scales (n collisions)")
         call close_tables([unit])
     end subroutine write_tables
+
+    !> The table `name` of the lines of the rows of every rule that `pick`
+    !> marks, in row order.
+    subroutine write_picked(name, header, pick)
+        character(len=*), intent(in) :: name, header
+        logical, intent(in) :: pick(:)
+        type(row_t), allocatable :: lines(:)
+        integer :: unit, stat, j, k
+        character(len=300) :: msg
+        call open_table(out, name, header, unit, stat, msg)
+        call stop_unless_normal(stat, msg)
+        ! (picked one by one: pack of a component of a section of outcome
+        ! would copy the section to an array temporary)
+        allocate (lines(count(pick)))
+        k = 0
+        do j = 1, size(pick)
+            if (.not. pick(j)) cycle
+            k = k + 1
+            lines(k) = outcome(every, j)%row
+        end do
+        call write_rows(unit, lines)
+        call close_tables([unit])
+    end subroutine write_picked
 
     !> The rows of each answer, tab-separated, among rows first..last of a
     !> rule (of length p only, if given).

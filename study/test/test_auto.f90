@@ -323,14 +323,15 @@ contains
     end subroutine test_sweep_threads
 
     !> c12-collapse on 1 and 2 threads counts the same rows (its rows run on
-    !> the threads): the same unanswered rows, answers, table per p and survey
-    !> table (its wall times are in timing/collapse_survey.tsv, not compared).
+    !> the threads): the same unanswered rows, rows of order computed,
+    !> answers, table per p and survey table (its wall times are in
+    !> timing/collapse_survey.tsv, not compared).
     subroutine test_collapse_threads(error)
         type(error_t), allocatable, intent(out) :: error
         character(len=*), parameter :: dir = "build/test-collapse-threads"
-        character(len=*), parameter :: tables(4) = [character(len=24) :: &
-            "collapse_unanswered.tsv", "collapse_answers.tsv", "collapse_by_p.tsv", &
-            "collapse_survey.tsv"]
+        character(len=*), parameter :: tables(5) = [character(len=28) :: &
+            "collapse_unanswered.tsv", "collapse_order_computed.tsv", "collapse_answers.tsv", &
+            "collapse_by_p.tsv", "collapse_survey.tsv"]
         call run_twice(error, dir, "c12-collapse", "n=60 n_before=20 cap=3000", &
             "", "", &
             "OMP_NUM_THREADS=1 ", "OMP_NUM_THREADS=2 ", "", "", tables)
