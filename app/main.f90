@@ -448,8 +448,9 @@ contains
     !> that makes it so (run%rests_on, judged with the answer).
     subroutine write_premises()
         if (wanted("order") .or. wanted("order_stopped_by")) call write_order()
-        if (.not. allocated(run%rests_on)) return
-        if (len(run%rests_on) > 0 .and. wanted("rests_on")) call out%put("rests_on"//run%rests_on)
+        if (len_trim(run%rests_on) > 0 .and. wanted("rests_on")) then
+            call out%put("rests_on"//trim(run%rests_on))
+        end if
     end subroutine write_premises
 
     !> The collisions whose gaps the run keeps for write_order: as many as

@@ -4,7 +4,7 @@
 module test_auto
     use sphere_row, only: qp, dp, scene_t, run_t, event_log_t, scene_init, simulate, &
         scene_dp_t, run_dp_t, event_log_dp_t, bounds_dp_t, simulate_certified, auto_t, &
-        simulate_auto, itoa, order_check, order_premise
+        simulate_auto, itoa, order_check, order_premise, order_premise_in_dp
     use testsuite, only: error_t, unittest_t, new_unittest, check, cases
     implicit none
     private
@@ -315,11 +315,13 @@ contains
     !> 3 to 6 (the run keeps a followed group's collisions in the row's
     !> numbers). A run that kept no order is not checked, and one whose kept
     !> gap at a collision (the 5th, and the last, in the followed group) is
-    !> not exact arithmetic's is stopped there.
+    !> not exact arithmetic's is stopped there. precision=auto's answer in
+    !> real(8), its certified run, keeps its order too.
     subroutine test_order_premise(error)
         type(error_t), allocatable, intent(out) :: error
         type(scene_t) :: scenes(2)
         type(run_t) :: run
+        type(auto_t) :: auto
         character(len=80) :: why
         character(len=:), allocatable :: what
         logical :: proven
@@ -354,6 +356,14 @@ contains
                 call simulate(scenes(i), run)
             end do
         end do
+        call scene_init(scenes(1), stat, msg, p=4, e=0.2_qp)
+        scenes(1)%keep_order = huge(1)
+        call simulate_auto(scenes(1), run, auto)
+        call order_premise_in_dp(scenes(1), run, huge(1.0_qp), proven, why)
+        call check(error, auto%answered == "dp" .and. run%order_n == run%n .and. proven, &
+            "p=4 e=0.2 by precision=auto: answered in "//auto%answered//", "// &
+            itoa(run%order_n)//" of "//itoa(run%n)//" collisions kept, ("//trim(why)// &
+            "); expected real(8), every one kept, and proven")
     end subroutine test_order_premise
 
 end module test_auto

@@ -248,7 +248,10 @@ contains
         run%order_n = low%order_n
         if (allocated(low%order_gaps)) run%order_gaps = low%order_gaps(:low%order_n)
         run%answer = low%answer
-        if (allocated(low%rests_on)) run%rests_on = low%rests_on
+        run%rests_on = low%rests_on
+        run%clock%passed = low%clock%passed
+        run%clock%window_energy = real(low%clock%window_energy, qp)
+        run%clock%horizon_doubt = low%clock%horizon_doubt
         run%v_bound = real(low%v_bound, qp)
         if (allocated(low%v_bounds)) run%v_bounds = real(low%v_bounds, qp)
         if (allocated(low%v_rounding)) run%v_rounding = real(low%v_rounding, qp)

@@ -133,7 +133,9 @@ contains
     end subroutine run_survey
 
     !> Run one row and keep what the tables need of it (an unresolved row's
-    !> line of collapse_unanswered.tsv, built here on the thread by row_t).
+    !> line of collapse_unanswered.tsv, or an exact or certified row's of
+    !> collapse_order_computed.tsv where the check does not prove its order,
+    !> built here on the thread by row_t).
     subroutine one_run(scene, index, result)
         type(scene_t), intent(in) :: scene
         integer, intent(in) :: index
@@ -186,8 +188,8 @@ contains
         call result%row%add(scene_command(scene))
     end subroutine one_run
 
-    !> The survey table, the table per row length, the unresolved rows and the
-    !> answers.
+    !> The survey table, the table per row length, the unresolved rows, the
+    !> rows whose order is computed and the answers.
     subroutine write_tables()
         integer :: unit, unit_time, stat, rule, p, a, rows_of, k
         character(len=300) :: msg
