@@ -116,13 +116,18 @@ module sphere_row_policy
         !> each waiting before it is tried again (tuned on the collapse survey
         !> of 1000 random rows).
         integer :: order_blocks = 4
-        !> Engine collisions to wait, per cascade collision of the last try,
-        !> before the same block is tried again: after a try that found no
-        !> merge, and after one that proved it (tuned on the collapse survey:
-        !> with one wait for every block, a wait of 1/16 after a merge
-        !> answered 773 of 1000 rows, 1/64 793 in 1.2 times the time, 1/256
-        !> 803 in 1.5 times, no wait 814 in 4.6 times).
-        integer :: order_wait_per_step = 16, order_wait_after_merge = 64
+        !> The work of the last try (its cascade collisions times the block's
+        !> contacts, the unit of order_work) per engine collision waited before
+        !> the same block is tried again: after a try that found no merge, and
+        !> after one that proved it. In the unit of the try's cost (a cascade
+        !> collision of a try scans the block's rates), so that the tries'
+        !> share of a run's time does not grow with the block's length. Tuned
+        !> on the collapse survey as a wait per cascade collision (16, and 64
+        !> after a merge: a wait of 1/16 after a merge answered 773 of 1000
+        !> rows, 1/64 793 in 1.2 times the time, 1/256 803 in 1.5 times, no
+        !> wait 814 in 4.6 times), kept as they were for a block of 16
+        !> contacts (the survey's answers the same).
+        integer :: order_work_per_wait = 256, order_work_per_wait_merged = 1024
         !> Blocks struck at rest within themselves whose first try's verdict is
         !> remembered, and the longest run of closed gaps looked at on a
         !> strike (tuned on the collapse survey).
