@@ -3,8 +3,8 @@
 # tol) and precision=auto, against the study's tight event loop (the same
 # variables, rule and stop, a heap and nothing else) with its clock in one
 # real and in two as the engine's; elastic rows as lines, the inelastic rows
-# that end normally and the collapse-heavy row (e = 0.2, 10^6 collisions) as
-# points. From cost_vs_loop.tsv (c12-cost), whose first 12 rows are the
+# that end normally, the collapse-heavy row (e = 0.2, 10^6 collisions) and
+# the collapse region late (p = 100, e = 0.9, run to its answer) as points. From cost_vs_loop.tsv (c12-cost), whose first 12 rows are the
 # elastic rows, each p in the order qp, dp, auto (so `every 3` picks a line).
 # Call: gnuplot -e "dir='results'; term='png'; out='results/cost_loop.png'" study/cost_loop.gp
 if (term eq 'png') { set terminal pngcairo size 1150,650 font ',11' } else { set terminal svg size 1150,650 dynamic font ',11' }
@@ -22,7 +22,7 @@ set logscale xy
 set format x "10^{%L}"
 set grid
 set key outside right box opaque
-set xrange [100:2e6]
+set xrange [70:2e6]
 pick(row, prec, col) = (strcol("row") eq row && strcol("precision") eq prec) ? column(col) : 1/0
 plot f every 3::0::11 using (column("p")):(pick("elastic", "qp", "engine_ns_per_collision")) with linespoints pt 7 lw 2 lc rgb '#1f77b4' title 'elastic: engine, real(16)', \
      f every 3::0::11 using (column("p")):(pick("elastic", "qp", "loop_ns_per_collision")) with linespoints pt 6 lw 1 dt 2 lc rgb '#1f77b4' title 'elastic: loop, real(16), one-real clock', \
@@ -37,4 +37,8 @@ plot f every 3::0::11 using (column("p")):(pick("elastic", "qp", "engine_ns_per_
      f using (column("p")):(pick("inelastic", "dp", "loop_ns_per_collision")) with points pt 4 ps 1.5 lc rgb '#d62728' title 'inelastic: loop, real(8)', \
      f using (column("p")):(pick("collapse", "qp", "engine_ns_per_collision")) with points pt 13 ps 2 lc rgb '#1f77b4' title 'e = 0.2, 10^6 collisions: engine, real(16)', \
      f using (column("p")):(pick("collapse", "dp", "engine_ns_per_collision")) with points pt 13 ps 2 lc rgb '#d62728' title 'e = 0.2: engine, real(8)', \
-     f using (column("p")):(pick("collapse", "qp", "loop_ns_per_collision")) with points pt 12 ps 2 lc rgb '#1f77b4' title 'e = 0.2: loop, real(16)'
+     f using (column("p")):(pick("collapse", "qp", "loop_ns_per_collision")) with points pt 12 ps 2 lc rgb '#1f77b4' title 'e = 0.2: loop, real(16)', \
+     f using (column("p")):(pick("collapse_late", "qp", "engine_ns_per_collision")) with points pt 11 ps 2 lc rgb '#1f77b4' title 'e = 0.9 to its answer: engine, real(16)', \
+     f using (column("p")):(pick("collapse_late", "dp", "engine_ns_per_collision")) with points pt 11 ps 2 lc rgb '#d62728' title 'e = 0.9: engine, real(8)', \
+     f using (column("p")):(pick("collapse_late", "qp", "loop_ns_per_collision")) with points pt 10 ps 2 lc rgb '#1f77b4' title 'e = 0.9: loop, real(16)', \
+     f using (column("p")):(pick("collapse_late", "dp", "loop_ns_per_collision")) with points pt 10 ps 2 lc rgb '#d62728' title 'e = 0.9: loop, real(8)'
