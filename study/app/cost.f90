@@ -14,9 +14,10 @@
 !> study (sphere_row_tight.inc: the same variables, rule and stop, a heap,
 !> nothing else) in real(16), or real(8) for dp, on elastic rows p = 10^3 ...
 !> 10^6, inelastic rows that end normally, a collapse-heavy row (p = 10^5,
-!> e = 0.2, its first 10^6 collisions) and the collapse region late (p = 100,
-!> e = 0.9, run to its answer, the loop as many collisions); runs in turn, engine and loop, the
-!> median of the ratios of the rounds (cost_vs_loop.tsv); and against the
+!> e = 0.2, its first 10^6 collisions) and the collapse region late
+!> (p = 100, e = 0.9, run to its answer, the loop as many collisions); runs
+!> in turn, engine and loop, the median of the ratios of the rounds
+!> (cost_vs_loop.tsv); and against the
 !> same loop with the engine's two-real clock (loop2), which tells the price
 !> of that clock's accuracy from the price of the rest.
 program c12_cost
