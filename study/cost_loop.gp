@@ -4,8 +4,9 @@
 # variables, rule and stop, a heap and nothing else) with its clock in one
 # real and in two as the engine's; elastic rows as lines, the inelastic rows
 # that end normally, the collapse-heavy row (e = 0.2, 10^6 collisions) and
-# the collapse region late (p = 100, e = 0.9, run to its answer) as points. From cost_vs_loop.tsv (c12-cost), whose first 12 rows are the
-# elastic rows, each p in the order qp, dp, auto (so `every 3` picks a line).
+# the collapse region late (p = 100, e = 0.9, run to its answer) as points.
+# From cost_vs_loop.tsv (c12-cost), whose first 12 rows are the elastic
+# rows, each p in the order qp, dp, auto (so `every 3` picks a line).
 # Call: gnuplot -e "dir='results'; term='png'; out='results/cost_loop.png'" study/cost_loop.gp
 if (term eq 'png') { set terminal pngcairo size 1150,650 font ',11' } else { set terminal svg size 1150,650 dynamic font ',11' }
 set output out
