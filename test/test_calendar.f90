@@ -3,8 +3,8 @@
 !> the same status, and final states equal to within the rounding of the two
 !> ways of moving a gap (at every step, or once from its own time).
 module test_calendar
-    use sphere_row, only: qp, scene_t, run_t, event_log_t, scene_init, simulate, str, &
-        status_normal, status_collapsed, itoa
+    use sphere_row, only: qp, scene_t, run_t, event_log_t, observer_t, scene_init, simulate, &
+        str, status_normal, status_collapsed, itoa, event_collision
     use testsuite, only: error_t, unittest_t, new_unittest, check, seed_random, cases
     use test_support, only: random_row
     implicit none
@@ -22,6 +22,17 @@ module test_calendar
         type(event_log_t) :: log_cal, log_scan
     end type pair_t
 
+    !> Checks the calendar's heap after every collision: each entry no
+    !> earlier than its parent (impact time, then approach rate, then the
+    !> gap's index), where neither is a gap whose rate the collision has just
+    !> changed (those are re-keyed after it). Keeps the first collision with
+    !> an entry out of order (0: none).
+    type, extends(observer_t) :: heap_watch_t
+        integer :: out_of_order = 0
+    contains
+        procedure :: notify => heap_notify
+    end type heap_watch_t
+
 contains
 
     !> The calendar tests.
@@ -32,7 +43,8 @@ contains
             new_unittest("elastic_row_hands_on", test_elastic_row), &
             new_unittest("long_rows_same_answer", test_long_rows), &
             new_unittest("tiny_tol_keeps_the_scan", test_tiny_tol), &
-            new_unittest("clock_carries_the_exact_time", test_exact_clock) &
+            new_unittest("clock_carries_the_exact_time", test_exact_clock), &
+            new_unittest("heap_in_order_at_ties", test_heap_order) &
             ]
     end function collect_calendar
 
@@ -232,5 +244,57 @@ contains
             ": the clock after "//itoa(run%n)//" collisions is off the sum of its gaps by "// &
             itoa(nint(off/spacing(run%clock%t)*1000))//"/1000 of t's last place")
     end subroutine test_exact_clock
+
+    !> A struck row of 48 equal spheres at e = 0.5 (the calendar's shortest
+    !> row): its touching blocks give impacts at one instant, keyed at the
+    !> same time, which the approach rate orders. The heap stays in that
+    !> order through the run's 3 x 10^4 collisions (a heap that compared a
+    !> rate changed before its gap was re-keyed was out of order after
+    !> collision 4649).
+    subroutine test_heap_order(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(scene_t) :: scene
+        type(run_t) :: run
+        type(heap_watch_t) :: watch
+        integer :: stat
+        character(len=200) :: msg
+        call scene_init(scene, stat, msg, p=48, e=0.5_qp, max_collisions=30000)
+        call simulate(scene, run, observer=watch)
+        call check(error, run%cal%on .and. run%n > 5000, &
+            "p = 48, e = 0.5: the calendar runs past collision 5000 ("//itoa(run%n)//")")
+        if (allocated(error)) return
+        call check(error, watch%out_of_order == 0, &
+            "p = 48, e = 0.5: the heap out of order after collision "//itoa(watch%out_of_order))
+    end subroutine test_heap_order
+
+    !> heap_watch_t's check after a collision at gap `first` (its left sphere;
+    !> `last` and the approach rate `w` are not needed).
+    subroutine heap_notify(self, run, kind, first, last, w)
+        class(heap_watch_t), intent(inout) :: self
+        type(run_t), intent(in) :: run
+        integer, intent(in) :: kind, first, last
+        real(qp), intent(in) :: w
+        integer :: c, i, j
+        logical :: later
+        if (kind /= event_collision .or. self%out_of_order > 0) return
+        do c = 2, run%cal%heap_n
+            i = run%cal%heap(c/2)
+            j = run%cal%heap(c)
+            if (min(i, j) == 0 .or. abs(i - first) <= 1 .or. abs(j - first) <= 1) cycle
+            if (run%cal%key(i) /= run%cal%key(j)) then
+                later = run%cal%key(i) > run%cal%key(j)
+            else if (run%cal%key_lo(i) /= run%cal%key_lo(j)) then
+                later = run%cal%key_lo(i) > run%cal%key_lo(j)
+            else if (run%dy(i) /= run%dy(j)) then
+                later = run%dy(i) > run%dy(j)
+            else
+                later = i > j
+            end if
+            if (later) then
+                self%out_of_order = run%n
+                return
+            end if
+        end do
+    end subroutine heap_notify
 
 end module test_calendar
