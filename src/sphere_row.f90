@@ -23,7 +23,8 @@ module sphere_row
         simulate_certified_qp => simulate_certified_wp, budget_qp => budget_wp, &
         order_check_qp => order_check_wp, order_premise_qp => order_premise_wp, &
         collapse_proven_qp => collapse_proven_wp, struck_least => struck_least_wp, &
-        gaps_at_time_qp => gaps_at_time_wp, velocities_now_qp => velocities_now_wp
+        gaps_at_time_qp => gaps_at_time_wp, velocities_now_qp => velocities_now_wp, &
+        comparisons_qp => comparisons_wp
 #ifdef SPHERE_ROW_XDP
     use sphere_row_engine_xdp, only: scene_xdp_t => scene_t, run_xdp_t => run_t, &
         event_log_xdp_t => event_log_t, scene_init_xdp => scene_init_wp, &
@@ -33,7 +34,7 @@ module sphere_row
         simulate_certified_xdp => simulate_certified_wp, budget_xdp => budget_wp, &
         order_check_xdp => order_check_wp, order_premise_xdp => order_premise_wp, &
         collapse_proven_xdp => collapse_proven_wp, gaps_at_time_xdp => gaps_at_time_wp, &
-        velocities_now_xdp => velocities_now_wp
+        velocities_now_xdp => velocities_now_wp, comparisons_xdp => comparisons_wp
 #endif
     use sphere_row_engine_dp, only: scene_dp_t => scene_t, run_dp_t => run_t, &
         event_log_dp_t => event_log_t, scene_init_dp => scene_init_wp, &
@@ -43,7 +44,7 @@ module sphere_row
         simulate_certified_dp => simulate_certified_wp, budget_dp => budget_wp, &
         order_check_dp => order_check_wp, order_premise_dp => order_premise_wp, &
         collapse_proven_dp => collapse_proven_wp, gaps_at_time_dp => gaps_at_time_wp, &
-        velocities_now_dp => velocities_now_wp
+        velocities_now_dp => velocities_now_wp, comparisons_dp => comparisons_wp
     use sphere_row_engine_sp, only: scene_sp_t => scene_t, run_sp_t => run_t, &
         event_log_sp_t => event_log_t, scene_init_sp => scene_init_wp, &
         scene_check_sp => scene_check_wp, simulate_sp => simulate_wp, &
@@ -52,7 +53,7 @@ module sphere_row
         simulate_certified_sp => simulate_certified_wp, budget_sp => budget_wp, &
         order_check_sp => order_check_wp, order_premise_sp => order_premise_wp, &
         collapse_proven_sp => collapse_proven_wp, gaps_at_time_sp => gaps_at_time_wp, &
-        velocities_now_sp => velocities_now_wp
+        velocities_now_sp => velocities_now_wp, comparisons_sp => comparisons_wp
     use sphere_row_auto, only: auto_t, simulate_auto, simulate_in_dp, order_premise_in_dp
     implicit none
     private
@@ -72,7 +73,7 @@ module sphere_row
     public :: scene_init, scene_check, simulate, gaps_at, kinetic_energy, momentum, str, budget
     public :: bounds_t, bounds_dp_t, bounds_sp_t, simulate_certified, auto_t, simulate_auto
     public :: simulate_in_dp, order_premise_in_dp, collapse_proven, struck_least, order_check, &
-        order_premise, gaps_at_time, velocities_now, status_horizon, event_sample
+        order_premise, gaps_at_time, velocities_now, status_horizon, event_sample, comparisons
     public :: sphere_row_version
 
     !> The package's version, as fpm.toml states it (a test compares them).
@@ -123,6 +124,15 @@ module sphere_row
         module procedure scene_check_xdp
 #endif
     end interface scene_check
+
+    !> The engine's comparisons of two reals against the operators (see
+    !> comparisons_wp in sphere_row_calendar.inc).
+    interface comparisons
+        module procedure comparisons_qp, comparisons_dp, comparisons_sp
+#ifdef SPHERE_ROW_XDP
+        module procedure comparisons_xdp
+#endif
+    end interface comparisons
 
     !> Run a scene to its end.
     interface simulate

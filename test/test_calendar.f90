@@ -3,8 +3,9 @@
 !> the same status, and final states equal to within the rounding of the two
 !> ways of moving a gap (at every step, or once from its own time).
 module test_calendar
-    use sphere_row, only: qp, scene_t, run_t, event_log_t, observer_t, scene_init, simulate, &
-        str, status_normal, status_collapsed, itoa, event_collision
+    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_positive_inf, ieee_quiet_nan
+    use sphere_row, only: qp, dp, scene_t, run_t, event_log_t, observer_t, scene_init, simulate, &
+        str, status_normal, status_collapsed, itoa, event_collision, comparisons
     use testsuite, only: error_t, unittest_t, new_unittest, check, seed_random, cases
     use test_support, only: random_row
     implicit none
@@ -44,7 +45,8 @@ contains
             new_unittest("long_rows_same_answer", test_long_rows), &
             new_unittest("tiny_tol_keeps_the_scan", test_tiny_tol), &
             new_unittest("clock_carries_the_exact_time", test_exact_clock), &
-            new_unittest("heap_in_order_at_ties", test_heap_order) &
+            new_unittest("heap_in_order_at_ties", test_heap_order), &
+            new_unittest("comparisons_agree_with_operators", test_comparisons) &
             ]
     end function collect_calendar
 
@@ -267,6 +269,37 @@ contains
             "p = 48, e = 0.5: the heap out of order after collision "//itoa(watch%out_of_order))
     end subroutine test_heap_order
 
+    !> The engine's comparisons (in real(16) from the bits, in real(8) the
+    !> operators) give what a == 0, a == b, a < b and a <= b give, for every
+    !> pair of both signs of zero, the smallest subnormal, tiny, 1 and its
+    !> neighbours, huge, infinity and NaN, each with either sign.
+    subroutine test_comparisons(error)
+        type(error_t), allocatable, intent(out) :: error
+        real(qp), allocatable :: q(:)
+        real(dp), allocatable :: d(:)
+        integer :: i, j
+        q = [0.0_qp, tiny(1.0_qp)*epsilon(1.0_qp), tiny(1.0_qp), 1.0_qp, &
+            1.0_qp + epsilon(1.0_qp), 1.0_qp - epsilon(1.0_qp)/2, huge(1.0_qp), &
+            ieee_value(1.0_qp, ieee_positive_inf), ieee_value(1.0_qp, ieee_quiet_nan)]
+        d = [0.0_dp, tiny(1.0_dp)*epsilon(1.0_dp), tiny(1.0_dp), 1.0_dp, &
+            1.0_dp + epsilon(1.0_dp), 1.0_dp - epsilon(1.0_dp)/2, huge(1.0_dp), &
+            ieee_value(1.0_dp, ieee_positive_inf), ieee_value(1.0_dp, ieee_quiet_nan)]
+        q = [q, -q]
+        d = [d, -d]
+        do i = 1, size(q)
+            do j = 1, size(q)
+                call check(error, all(comparisons(q(i), q(j)) .eqv. &
+                    [q(i) == 0, q(i) == q(j), q(i) < q(j), q(i) <= q(j)]), &
+                    "real(16): values "//itoa(i)//" and "//itoa(j)//" compare otherwise")
+                if (allocated(error)) return
+                call check(error, all(comparisons(d(i), d(j)) .eqv. &
+                    [d(i) == 0, d(i) == d(j), d(i) < d(j), d(i) <= d(j)]), &
+                    "real(8): values "//itoa(i)//" and "//itoa(j)//" compare otherwise")
+                if (allocated(error)) return
+            end do
+        end do
+    end subroutine test_comparisons
+
     !> heap_watch_t's check after a collision at gap `first` (its left sphere;
     !> `last` and the approach rate `w` are not needed).
     subroutine heap_notify(self, run, kind, first, last, w)
@@ -281,10 +314,10 @@ contains
             i = run%cal%heap(c/2)
             j = run%cal%heap(c)
             if (min(i, j) == 0 .or. abs(i - first) <= 1 .or. abs(j - first) <= 1) cycle
-            if (run%cal%key(i) /= run%cal%key(j)) then
-                later = run%cal%key(i) > run%cal%key(j)
-            else if (run%cal%key_lo(i) /= run%cal%key_lo(j)) then
-                later = run%cal%key_lo(i) > run%cal%key_lo(j)
+            if (run%cal%key(c/2) /= run%cal%key(c)) then
+                later = run%cal%key(c/2) > run%cal%key(c)
+            else if (run%cal%key_lo(c/2) /= run%cal%key_lo(c)) then
+                later = run%cal%key_lo(c/2) > run%cal%key_lo(c)
             else if (run%dy(i) /= run%dy(j)) then
                 later = run%dy(i) > run%dy(j)
             else

@@ -4,6 +4,7 @@ module sphere_row_tight_qp
     implicit none
     private
     public :: tight_run
+    include "../../src/engine/sphere_row_bits.inc"
 
 contains
 
