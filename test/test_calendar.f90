@@ -6,6 +6,8 @@ module test_calendar
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_positive_inf, ieee_quiet_nan
     use sphere_row, only: qp, dp, scene_t, run_t, event_log_t, observer_t, scene_init, simulate, &
         str, status_normal, status_collapsed, itoa, event_collision, comparisons
+    use sphere_row_pattern_dp, only: cascade_t, cascade_start, cascade_collide, rescale, &
+        rule_choice, choice_part_t, choice_parts, parts_choice
     use testsuite, only: error_t, unittest_t, new_unittest, check, seed_random, cases
     use test_support, only: random_row
     implicit none
@@ -40,6 +42,7 @@ contains
     function collect_calendar() result(tests)
         type(unittest_t), allocatable :: tests(:)
         tests = [ &
+            new_unittest("try_choice_by_parts_as_one_pass", test_choice_parts), &
             new_unittest("random_rows_same_sequence", test_random_rows), &
             new_unittest("elastic_row_hands_on", test_elastic_row), &
             new_unittest("long_rows_same_answer", test_long_rows), &
@@ -299,6 +302,102 @@ contains
             end do
         end do
     end subroutine test_comparisons
+
+    !> The rule's choice in a try, kept by parts of the rates (choice_parts,
+    !> parts_choice) and in rule_choice, against one pass over the rates
+    !> written here: the same contact and the same slack, to the bit, on
+    !> random rates with ties, zeros of both signs and negative ones, for
+    !> every size of part, and along a cascade that keeps its parts as a try
+    !> does (the parts beside each collision, all after a rescale).
+    subroutine test_choice_parts(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(cascade_t) :: cs
+        type(choice_part_t), allocatable :: parts(:)
+        real(dp), allocatable :: w(:), kl(:), kr(:), draw(:)
+        real(dp) :: scale, slack
+        integer :: trial, n, chunk, step, c, q, st
+        call seed_random(8642, 7)
+        do trial = 1, 300
+            n = 2 + mod(trial, 40)
+            allocate (draw(n))
+            call random_number(draw)
+            ! rates in [-1, 1] on a grid of 1/8 (ties), some of them -0
+            w = anint(16*draw - 8)/8
+            where (w == 0 .and. draw > 0.5_dp) w = -0.0_dp
+            do chunk = 1, n
+                parts = [(choice_part_t(), q=1, (n - 1)/chunk + 1)]
+                call choice_parts(w, parts, 1, n, chunk)
+                call agrees("trial "//itoa(trial)//", parts of "//itoa(chunk))
+                if (allocated(error)) return
+            end do
+            call rule_choice(w, c, slack)
+            call check(error, c == reference_c(w) .and. slack == reference_slack(w), &
+                "trial "//itoa(trial)//": rule_choice chose otherwise")
+            if (allocated(error)) return
+            ! a cascade with the kicks of unequal masses, e = 0.9
+            call random_number(draw)
+            kl = 0.5_dp + draw
+            kr = 2 - kl
+            call cascade_start(cs, kl, kr, 0.9_dp, 4, st)
+            call check(error, st == 0, "cascade_start: no memory")
+            if (allocated(error)) return
+            w = abs(w) + 1.0_dp/16
+            scale = 1
+            chunk = ceiling(sqrt(real(n)))
+            parts = [(choice_part_t(), q=1, (n - 1)/chunk + 1)]
+            call choice_parts(w, parts, 1, n, chunk)
+            do step = 1, 200
+                call agrees("trial "//itoa(trial)//", step "//itoa(step))
+                if (allocated(error)) return
+                call parts_choice(parts, c, slack)
+                if (c == 0) exit
+                ! (as ordered_cascade_merges keeps them)
+                call cascade_collide(w, cs, c)
+                call choice_parts(w, parts, c - 1, c + 1, chunk)
+                if (mod(step, 8) == 0) then
+                    call rescale(w, scale)
+                    call choice_parts(w, parts, 1, n, chunk)
+                end if
+            end do
+            deallocate (draw)
+        end do
+    contains
+        !> The parts' choice against the reference on the rates w.
+        subroutine agrees(where)
+            character(len=*), intent(in) :: where
+            real(dp) :: slack
+            call parts_choice(parts, c, slack)
+            call check(error, c == reference_c(w) .and. slack == reference_slack(w), &
+                where//": chose "//itoa(c)//", one pass "//itoa(reference_c(w)))
+        end subroutine agrees
+    end subroutine test_choice_parts
+
+    !> The engine's choice at equal times by one pass: the largest rate above
+    !> 0, the leftmost of equals (0: none).
+    pure integer function reference_c(w) result(c)
+        real(dp), intent(in) :: w(:)
+        integer :: j
+        c = 0
+        do j = 1, size(w)
+            if (w(j) > 0 .and. (c == 0 .or. w(j) > w(max(c, 1)))) c = j
+        end do
+    end function reference_c
+
+    !> Its slack: the choice's rate less the largest other rate (and 0), over
+    !> the largest size; 0 if none is chosen.
+    pure real(dp) function reference_slack(w) result(slack)
+        real(dp), intent(in) :: w(:)
+        real(dp) :: others
+        integer :: c, j
+        c = reference_c(w)
+        slack = 0
+        if (c == 0) return
+        others = 0
+        do j = 1, size(w)
+            if (j /= c) others = max(others, w(j))
+        end do
+        slack = min(w(c), w(c) - others)/maxval(abs(w))
+    end function reference_slack
 
     !> heap_watch_t's check after a collision at gap `first` (its left sphere;
     !> `last` and the approach rate `w` are not needed).

@@ -11,8 +11,8 @@ module sphere_row_cascade
     use sphere_row_kinds, only: dp
     use sphere_row_policy, only: policy
     use sphere_row_pattern_dp, only: cascade_t, jump_period_most, jump_levels, cascade_start, &
-        rule_choice, rescale, cascade_collide, pattern_window, period_map, pattern_holds, &
-        pattern_contracts
+        rescale, cascade_collide, pattern_window, period_map, pattern_holds, pattern_contracts, &
+        choice_part_t, choice_parts, parts_choice
     use sphere_row_pattern_fine, only: fine_t => cascade_t, fine_kind => pattern_kind, &
         fine_start => cascade_start, fine_contracts => pattern_contracts
     implicit none
@@ -29,6 +29,16 @@ module sphere_row_cascade
         jump_window_most = policy%jump_window_most, &
         jump_kinds_most = policy%jump_kinds_most, jump_need = policy%jump_need
     real(dp), parameter :: quiet_noise = real(policy%quiet_noise, dp)
+
+    !> The watch of a try for a period k <= jump_period_most that its latest
+    !> collisions repeat (watch_repeats), at place jump_period_most + 1 - k:
+    !> how many entries in a row have matched the entry k before (`agree`),
+    !> and whether k was tried since it last broke (`blocked`: -1, else 0;
+    !> integers, as masks, so that the watch's loop vectorizes).
+    type :: repeats_t
+        integer :: agree(jump_period_most) = 0
+        integer :: blocked(jump_period_most) = 0
+    end type repeats_t
 
 contains
 
@@ -95,10 +105,11 @@ contains
         integer, intent(out) :: steps
         type(cascade_t) :: cs
         real(dp) :: w(size(rates)), scale, least, slack
+        type(choice_part_t), allocatable :: parts(:)
         integer, allocatable :: seq(:)
-        integer :: agree(jump_period_most)
-        logical :: blocked(jump_period_most), stopped, watch
-        integer :: n, most, check, period, c, items, per, id, cost, st
+        type(repeats_t) :: repeats
+        logical :: stopped, watch
+        integer :: n, most, check, period, c, items, per, id, cost, st, chunk
         merges = .false.
         quiet_end = .false.
         spent = .false.
@@ -115,17 +126,22 @@ contains
         ! the rates are scale*w, w kept about 1
         scale = maxval(abs(rates))
         w = rates/scale
+        ! the rule's choice kept by parts of `chunk` contacts: a collision
+        ! rescans the part or two that hold its contacts, then the parts,
+        ! about chunk + n/chunk values, least at chunk = sqrt(n)
+        chunk = ceiling(sqrt(real(n)))
+        allocate (parts((n - 1)/chunk + 1), stat=st)
+        if (st /= 0) return
+        call choice_parts(w, parts, 1, n, chunk)
         least = 1
         stopped = .false.
         watch = quiet > 0
         check = order_first_check
         items = 0
-        agree = 0
-        blocked = .false.
         ! until the budget is spent or, with quiet > 0, the engine's cascade
         ! stops, its fastest approach insignificant, with every rate so
         do while (steps < most)
-            call rule_choice(w, c, slack)
+            call parts_choice(parts, c, slack)
             ! no contact closes: the cascade ends, a finite one
             if (c == 0) return
             if (watch) then
@@ -144,26 +160,30 @@ contains
             end if
             least = min(least, slack)
             call cascade_collide(w, cs, c)
+            call choice_parts(w, parts, c - 1, c + 1, chunk)
             steps = steps + 1
             items = items + 1
             seq(items) = c
             ! the rates fall by up to e per collision: kept about 1
-            if (mod(items, 8) == 0) call rescale(w, scale)
-            call watch_repeats(seq(:items), agree, blocked, per)
+            if (mod(items, 8) == 0) then
+                call rescale(w, scale)
+                call choice_parts(w, parts, 1, n, chunk)
+            end if
+            call watch_repeats(seq(:items), repeats, per)
             if (per > 0) then
                 call jump_ahead(cs, w, seq(items - per + 1:items), id, cost, slack)
                 steps = steps + cost
                 ! a part of the block that repeats its pattern for ever
                 if (id < 0) return
                 if (id == 0) then
-                    blocked(per) = .true.
+                    repeats%blocked(jump_period_most + 1 - per) = -1
                 else
                     least = min(least, slack)
                     items = items + 1
                     seq(items) = -id
-                    agree = 0
-                    blocked = .false.
+                    repeats = repeats_t()
                     call rescale(w, scale)
+                    call choice_parts(w, parts, 1, n, chunk)
                 end if
             end if
             if (items < check) cycle
@@ -212,23 +232,32 @@ contains
     !> a row have matched the entry k before (agree), and `per`, the shortest
     !> period that has now run jump_need whole periods and has not been tried
     !> since it last broke (blocked), 0 if none.
-    pure subroutine watch_repeats(seq, agree, blocked, per)
-        integer, intent(in) :: seq(:)
-        integer, intent(inout) :: agree(:)
-        logical, intent(inout) :: blocked(:)
+    pure subroutine watch_repeats(seq, repeats, per)
+        integer, contiguous, intent(in) :: seq(:)
+        type(repeats_t), intent(inout) :: repeats
         integer, intent(out) :: per
-        integer :: k, l
+        integer, parameter :: top = jump_period_most
+        integer :: j, l, m, s, most, match
         per = 0
         l = size(seq)
-        do k = 1, min(size(agree), l - 1)
-            if (seq(l) == seq(l - k)) then
-                agree(k) = agree(k) + 1
-            else
-                agree(k) = 0
-                blocked(k) = .false.
-            end if
-            if (per == 0 .and. agree(k) >= (jump_need - 1)*k .and. .not. blocked(k)) per = k
+        m = min(top, l - 1)
+        s = seq(l)
+        most = 0
+        ! (place j holds period top + 1 - j, which compares entry l with
+        ! entry l - top - 1 + j: the places run with the entries, and the
+        ! loop vectorizes)
+        do j = top + 1 - m, top
+            match = merge(-1, 0, s == seq(l - top - 1 + j))
+            repeats%agree(j) = iand(repeats%agree(j) + 1, match)
+            repeats%blocked(j) = iand(repeats%blocked(j), match)
+            most = max(most, repeats%agree(j))
         end do
+        if (most < jump_need - 1) return
+        do j = top, top + 1 - m, -1
+            per = top + 1 - j
+            if (repeats%agree(j) >= (jump_need - 1)*per .and. repeats%blocked(j) == 0) return
+        end do
+        per = 0
     end subroutine watch_repeats
 
     !> Jump the pattern of contacts (which has just run jump_need periods) as many
@@ -278,7 +307,9 @@ contains
             x(a:b) = y(a:b)
             top = j
         end do
-        ! in collisions, each a scan of the n rates and a few operations
+        ! in collisions, each counted as a scan of the n rates and a few
+        ! operations (the unit of a try's work, whatever a collision of it
+        ! takes: the rule's choice scans fewer, choice_parts)
         cost = 1 + (nw*(size(w) + size(pattern)) + (2*top + 3)*(nw*nw*nw + size(pattern)*size(w))) &
             /(size(w) + 4)
         if (top < 0) return
