@@ -8,6 +8,8 @@ module test_calendar
         str, status_normal, status_collapsed, itoa, event_collision, comparisons
     use sphere_row_pattern_dp, only: cascade_t, cascade_start, cascade_collide, rescale, &
         rule_choice, choice_part_t, choice_parts, parts_choice
+    use sphere_row_cascade, only: repeats_t, watch_repeats
+    use sphere_row_policy, only: policy
     use testsuite, only: error_t, unittest_t, new_unittest, check, seed_random, cases
     use test_support, only: random_row
     implicit none
@@ -43,6 +45,7 @@ contains
         type(unittest_t), allocatable :: tests(:)
         tests = [ &
             new_unittest("try_choice_by_parts_as_one_pass", test_choice_parts), &
+            new_unittest("try_period_watch_as_one_pass", test_watch_repeats), &
             new_unittest("random_rows_same_sequence", test_random_rows), &
             new_unittest("elastic_row_hands_on", test_elastic_row), &
             new_unittest("long_rows_same_answer", test_long_rows), &
@@ -321,9 +324,9 @@ contains
             n = 2 + mod(trial, 40)
             allocate (draw(n))
             call random_number(draw)
-            ! rates in [-1, 1] on a grid of 1/8 (ties), some of them -0
+            ! rates in [-1, 1] on a grid of 1/8 (ties), zeros of both signs
             w = anint(16*draw - 8)/8
-            where (w == 0 .and. draw > 0.5_dp) w = -0.0_dp
+            where (w == 0) w = merge(0.0_dp, -0.0_dp, draw > 0.5_dp)
             do chunk = 1, n
                 parts = [(choice_part_t(), q=1, (n - 1)/chunk + 1)]
                 call choice_parts(w, parts, 1, n, chunk)
@@ -371,6 +374,69 @@ contains
                 where//": chose "//itoa(c)//", one pass "//itoa(reference_c(w)))
         end subroutine agrees
     end subroutine test_choice_parts
+
+    !> A try's watch for a repeating period (watch_repeats) against one pass
+    !> over the periods written here, entry by entry of sequences that repeat
+    !> a pattern of 1 to 20 contacts with a random entry now and then: the
+    !> same period found at every entry, with a found period blocked or
+    !> every count reset (as after a jump) at random, as a try does.
+    subroutine test_watch_repeats(error)
+        type(error_t), allocatable, intent(out) :: error
+        integer, parameter :: top = policy%jump_period_most, need = policy%jump_need
+        type(repeats_t) :: repeats
+        integer :: seq(600), pattern(20), agree(top), trial, l, i, k, per, per_ref
+        logical :: blocked(top)
+        real(dp) :: u(3)
+        call seed_random(1357, 11)
+        do trial = 1, 200
+            call random_number(u)
+            k = 1 + int(20*u(1))
+            pattern(:k) = [(1 + mod(7*i, 5), i=1, k)]
+            repeats = repeats_t()
+            agree = 0
+            blocked = .false.
+            do l = 1, size(seq)
+                call random_number(u)
+                seq(l) = pattern(1 + mod(l, k))
+                if (u(1) < 0.01_dp) seq(l) = 1 + int(5*u(2))
+                call watch_repeats(seq(:l), repeats, per)
+                call reference_watch(seq(:l), agree, blocked, per_ref)
+                call check(error, per == per_ref, "trial "//itoa(trial)//", entry "//itoa(l)// &
+                    ": period "//itoa(per)//", one pass "//itoa(per_ref))
+                if (allocated(error)) return
+                if (per == 0) cycle
+                if (u(3) < 0.5_dp) then
+                    ! (a period is held at place top + 1 - per)
+                    repeats%blocked(top + 1 - per) = -1
+                    blocked(per) = .true.
+                else if (u(3) < 0.7_dp) then
+                    repeats = repeats_t()
+                    agree = 0
+                    blocked = .false.
+                end if
+            end do
+        end do
+    contains
+        !> The watch by one pass over the periods k = 1, 2, ...
+        subroutine reference_watch(seq, agree, blocked, per)
+            integer, intent(in) :: seq(:)
+            integer, intent(inout) :: agree(:)
+            logical, intent(inout) :: blocked(:)
+            integer, intent(out) :: per
+            integer :: k, n
+            per = 0
+            n = size(seq)
+            do k = 1, min(size(agree), n - 1)
+                if (seq(n) == seq(n - k)) then
+                    agree(k) = agree(k) + 1
+                else
+                    agree(k) = 0
+                    blocked(k) = .false.
+                end if
+                if (per == 0 .and. agree(k) >= (need - 1)*k .and. .not. blocked(k)) per = k
+            end do
+        end subroutine reference_watch
+    end subroutine test_watch_repeats
 
     !> The engine's choice at equal times by one pass: the largest rate above
     !> 0, the leftmost of equals (0: none).

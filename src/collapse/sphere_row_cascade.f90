@@ -18,6 +18,8 @@ module sphere_row_cascade
     implicit none
     private
     public :: ordered_cascade_merges, cascade_jump, cascade_kind
+    ! (the watch of a try's period: for its test)
+    public :: repeats_t, watch_repeats
 
     !> The kind the cascade is run in, whatever the engine's.
     integer, parameter :: cascade_kind = dp
