@@ -8,7 +8,7 @@ module test_calendar
         str, status_normal, status_collapsed, itoa, event_collision, comparisons
     use sphere_row_pattern_dp, only: cascade_t, cascade_start, cascade_collide, rescale, &
         rule_choice, choice_part_t, choice_parts, parts_choice
-    use sphere_row_cascade, only: repeats_t, watch_repeats
+    use sphere_row_cascade, only: repeats_t, watch_repeats, block_period
     use sphere_row_policy, only: policy
     use testsuite, only: error_t, unittest_t, new_unittest, check, seed_random, cases
     use test_support, only: random_row
@@ -408,8 +408,7 @@ contains
                 ! (mostly neither, so that two periods come to be due at
                 ! once, and the shortest must be the one found)
                 if (u(3) < 0.1_dp) then
-                    ! (a period is held at place top + 1 - per)
-                    repeats%blocked(top + 1 - per) = -1
+                    call block_period(repeats, per)
                     blocked(per) = .true.
                 else if (u(3) < 0.15_dp) then
                     repeats = repeats_t()

@@ -19,7 +19,7 @@ module sphere_row_cascade
     private
     public :: ordered_cascade_merges, cascade_jump, cascade_kind
     ! (the watch of a try's period: for its test)
-    public :: repeats_t, watch_repeats
+    public :: repeats_t, watch_repeats, block_period
 
     !> The kind the cascade is run in, whatever the engine's.
     integer, parameter :: cascade_kind = dp
@@ -178,7 +178,7 @@ contains
                 ! a part of the block that repeats its pattern for ever
                 if (id < 0) return
                 if (id == 0) then
-                    repeats%blocked(jump_period_most + 1 - per) = -1
+                    call block_period(repeats, per)
                 else
                     least = min(least, slack)
                     items = items + 1
@@ -261,6 +261,14 @@ contains
         end do
         per = 0
     end subroutine watch_repeats
+
+    !> Period per is not looked at again until it breaks (its jump was not
+    !> taken).
+    pure subroutine block_period(repeats, per)
+        type(repeats_t), intent(inout) :: repeats
+        integer, intent(in) :: per
+        repeats%blocked(jump_period_most + 1 - per) = -1
+    end subroutine block_period
 
     !> Jump the pattern of contacts (which has just run jump_need periods) as many
     !> whole periods ahead as it still holds: w becomes M^times w on the
