@@ -7,10 +7,9 @@ program c12_a1
         scene_init, simulate, gaps_at, str, status_word, status_normal, event_collision, &
         event_collapse, itoa
     use sphere_row_tables, only: open_table, write_answer, answer_header, tab
-    use sphere_row_study_cli, only: cli_t, add_scene_keys, start_program, read_keys, fail, &
+    use sphere_row_study_cli, only: nl, cli_t, add_scene_keys, start_program, read_keys, fail, &
         stop_unless_normal, close_tables
     implicit none
-    character(len=*), parameter :: nl = new_line("a")
     type(cli_t) :: cli
     character(len=:), allocatable :: out, header, line
     character(len=300) :: msg

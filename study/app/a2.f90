@@ -4,10 +4,9 @@ program c12_a2
     use sphere_row, only: qp, scene_t, run_t, simulate, str, status_word, status_normal, &
         status_collapsed, itoa
     use sphere_row_tables, only: open_table, write_answer, answer_header, tab
-    use sphere_row_study_cli, only: cli_t, add_scene_keys, start_program, read_keys, fail, &
+    use sphere_row_study_cli, only: nl, cli_t, add_scene_keys, start_program, read_keys, fail, &
         stop_unless_normal, close_tables
     implicit none
-    character(len=*), parameter :: nl = new_line("a")
     type(cli_t) :: cli
     character(len=:), allocatable :: out, header
     character(len=300) :: msg

@@ -9,11 +9,10 @@ program c12_b1
     use sphere_row_analysis, only: sequence_of, sequence_text, sequence_hash, tail_period, &
         critical_restitution
     use sphere_row_bisection, only: bisect_ahead, bisect_changes
-    use sphere_row_study_cli, only: cli_t, add_scene_keys, start_program, read_keys, &
-        stop_unless_normal, close_tables, add_precision_key, precision_is_auto
+    use sphere_row_study_cli, only: nl, cli_t, start_program, read_keys, &
+        stop_unless_normal, close_tables, add_row_keys, precision_is_auto
     use sphere_row_sorting, only: sort
     implicit none
-    character(len=*), parameter :: nl = new_line("a")
     !> Class of a run with a collapse: its count depends on tol, not on e alone.
     integer(8), parameter :: collapsed_class = 0_8
     !> Smallest n of a point in the power-law fit: below it the run is too far
@@ -85,8 +84,7 @@ contains
         call cli%add_flag("critical", "yes", "also the critical restitution: bisection of" &
             //" collapsed against finite runs with tol_fine, the collapse cycle's rate map, " &
             //"b1_critical.tsv")
-        call add_precision_key(cli)
-        call add_scene_keys(cli, e_set_by="the scan of e")
+        call add_row_keys(cli, e_set_by="the scan of e")
         call read_keys(cli, scene)
         auto_runs = precision_is_auto(cli)
         out = cli%get_word("out")

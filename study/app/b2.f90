@@ -8,10 +8,9 @@ program c12_b2
         row_t, write_rows
     use sphere_row_analysis, only: sequence_of, sequence_text, sequence_hash, &
         sequence_polynomials, poly_eval
-    use sphere_row_study_cli, only: cli_t, add_scene_keys, start_program, read_keys, &
-        stop_unless_normal, close_tables, add_precision_key, precision_is_auto
+    use sphere_row_study_cli, only: nl, cli_t, start_program, read_keys, &
+        stop_unless_normal, close_tables, add_row_keys, precision_is_auto
     implicit none
-    character(len=*), parameter :: nl = new_line("a")
     !> Sequences longer than this are not written out as polynomials.
     integer, parameter :: max_listed = 20
     !> Allowance for the rounding of a polynomial's evaluation in real(16),
@@ -51,8 +50,7 @@ program c12_b2
         "with the polynomial in e of its own collision sequence."//nl// &
         "Writes OUT/b2_velocities.tsv, b2_closed_forms.tsv, b2_answers.tsv.")
     call cli%add_int("n_grid", "1001", "points of the grid of e in [0, 1]", lo=2)
-    call add_precision_key(cli)
-    call add_scene_keys(cli, e_set_by="the grid of e")
+    call add_row_keys(cli, e_set_by="the grid of e")
     call read_keys(cli, scene)
     auto_runs = precision_is_auto(cli)
     out = cli%get_word("out")

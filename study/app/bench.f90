@@ -12,11 +12,10 @@ program c12_bench
     use sphere_row_kind_engines, only: built_kinds, kind_info_t, kind_engine_t, new_kind_engine
     use sphere_row_tables, only: open_table, tab, split_tabs, cpu_model
     use sphere_row_monte_carlo, only: mc_counts_t, monte_carlo_v4
-    use sphere_row_study_cli, only: cli_t, start_program, read_keys, fail, stop_unless_normal, &
-        close_tables
+    use sphere_row_study_cli, only: nl, cli_t, start_program, read_keys, fail, &
+        stop_unless_normal, close_tables
     use sphere_row_sorting, only: median
     implicit none
-    character(len=*), parameter :: nl = new_line("a")
     character(len=*), parameter :: tasks(7) = [character(len=7) :: "a1", "a2", "b1", &
         "b2", "c1", "c2", "methods"]
     type(cli_t) :: cli

@@ -7,11 +7,10 @@ program c12_c1
     use sphere_row_tables, only: open_table, write_answer, answer_header, tab
     use sphere_row_analysis, only: sequence_of, sequence_text
     use sphere_row_secant, only: secant, secant_result_t, secant_word, secant_converged
-    use sphere_row_study_cli, only: cli_t, add_scene_keys, start_program, read_keys, fail, &
+    use sphere_row_study_cli, only: nl, cli_t, add_scene_keys, start_program, read_keys, fail, &
         stop_unless_normal, close_tables
     implicit none
     character(len=*), parameter :: name = "c12-c1"
-    character(len=*), parameter :: nl = new_line("a")
     !> Starting pairs of the robustness table: good ones around the root, and
     !> bad ones in the flat quasi-plastic range, astride the kink at the single-
     !> hit boundary, at the ends of [0, 1].

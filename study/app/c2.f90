@@ -27,14 +27,13 @@ program c12_c2
     use sphere_row_ranks, only: ranks_t, record_t, ranks_start, ranks_finish, block_range, &
         gather_records, layout_blocks
     use sphere_row_c2_tables, only: c2_sample_t, c2_statistics, c2_write_tables
-    use sphere_row_study_cli, only: cli_t, add_scene_keys, start_program, read_keys, fail, &
-        say, stop_unless_normal, add_precision_key, precision_is_auto
+    use sphere_row_study_cli, only: nl, cli_t, start_program, read_keys, fail, &
+        say, stop_unless_normal, add_row_keys, precision_is_auto
     use sphere_row_system, only: stderr_is_terminal
     use sphere_row_error, only: error_t
     implicit none
 
     character(len=*), parameter :: name = "c12-c2"
-    character(len=*), parameter :: nl = new_line("a")
     !> Sample sizes: at least 100 for the normal-quantile interval (see
     !> mean_ci_half_width); at most 10^8, about 3 GB of work arrays.
     integer, parameter :: n_least = 100, n_most = 100000000
@@ -225,8 +224,7 @@ contains
         call cli%add_real("mean", "0.5", "mean of e; at least 10 % of the law in [0, 1]")
         call cli%add_real("sd", "0.05", "standard deviation of e", lo=0.0_qp, lo_open=.true.)
         call cli%add_int("bins", "100", "histogram bins", lo=1, hi=bins_most)
-        call add_precision_key(cli)
-        call add_scene_keys(cli, e_set_by="the normal law of e")
+        call add_row_keys(cli, e_set_by="the normal law of e")
     end subroutine define_keys
 
     !> What the keys' own ranges cannot say: nmax >= n and enough of the law

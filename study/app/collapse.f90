@@ -16,10 +16,9 @@ program c12_collapse
     use sphere_row_sorting, only: sort
     use sphere_row_tables, only: open_table, write_answer, answer_header, tab, &
         row_t, write_rows
-    use sphere_row_study_cli, only: cli_t, start_program, read_keys, stop_unless_normal, &
-        close_tables, fail
+    use sphere_row_study_cli, only: nl, cli_t, start_program, read_keys, stop_unless_normal, &
+        close_tables, fail, add_run_keys, set_run_keys
     implicit none
-    character(len=*), parameter :: nl = new_line("a")
     !> Rules compared: every collapse rule, the fallback alone.
     integer, parameter :: every = 1, fallback = 2
     character(len=*), parameter :: rule_names(2) = ["every_rule   ", "fallback_only"]
@@ -28,8 +27,8 @@ program c12_collapse
     real(qp), parameter :: slack = 1.0e4_qp, per_collision = 4.0_qp
     type(cli_t) :: cli
     character(len=:), allocatable :: out
-    integer :: n, n_before, cap, seed, p_min, p_max
-    real(qp) :: span, equal_share, vtol, tol
+    integer :: n, n_before, seed, p_min, p_max
+    real(qp) :: span, equal_share
     !> What one run leaves for the tables.
     type :: outcome_t
         integer :: answer = 0
@@ -60,8 +59,6 @@ program c12_collapse
         "and the runs' wall times in OUT/timing/collapse_survey.tsv.")
     call cli%add_int("n", "1000", "random rows run by every collapse rule", lo=1)
     call cli%add_int("n_before", "300", "of these, rows run with the fallback rule alone", lo=0)
-    call cli%add_int("cap", "0", "the work budget of every run in collisions (0: the engine's "// &
-        "default, max(10^6, 100 p))", lo=0)
     call cli%add_int("seed", "12", "seed of the MT19937 stream of the rows", lo=0)
     call cli%add_int("p_min", "2", "least row length drawn", lo=2)
     call cli%add_int("p_max", "20", "largest row length drawn", lo=2)
@@ -69,15 +66,11 @@ program c12_collapse
         lo=1.0_qp)
     call cli%add_real("equal_share", "0.5", "share of the rows of equal masses", lo=0.0_qp, &
         hi=1.0_qp)
-    call cli%add_real("vtol", "-1", "the velocity tolerance of a bounded answer of every row "// &
-        "(below 0: the engine's default)", hi=1.0_qp, hi_open=.true.)
-    call cli%add_real("tol", "-1", "the insignificance tolerance of every row (below 0: the "// &
-        "engine's default, real(16)'s epsilon)", hi=1.0_qp, hi_open=.true.)
+    call add_run_keys(cli)
     call read_keys(cli)
     out = cli%get_word("out")
     n = cli%get_int("n")
     n_before = min(cli%get_int("n_before"), n)
-    cap = cli%get_int("cap")
     seed = cli%get_int("seed")
     p_min = cli%get_int("p_min")
     p_max = cli%get_int("p_max")
@@ -85,8 +78,6 @@ program c12_collapse
         ": allowed p_max >= p_min = "//itoa(p_min))
     span = cli%get_real("span")
     equal_share = cli%get_real("equal_share")
-    vtol = cli%get_real("vtol")
-    tol = cli%get_real("tol")
 
     call run_survey()
     call write_tables()
@@ -103,9 +94,7 @@ contains
         call survey_open(survey, seed, p_min, p_max, span, equal_share)
         do i = 1, n
             call survey_scene(survey, rows(i))
-            rows(i)%max_collisions = cap
-            if (vtol >= 0) rows(i)%vtol = vtol
-            if (tol >= 0) rows(i)%tol = tol
+            call set_run_keys(cli, rows(i))
         end do
         call survey_close(survey)
         ! jobs 1..n: the rows with every rule; n+1..n+n_before: the first
@@ -337,6 +326,8 @@ contains
     !> The budget in words.
     function budget_words() result(text)
         character(len=:), allocatable :: text
+        integer :: cap
+        cap = cli%get_int("cap")
         if (cap == 0) then
             text = "the default budget, max(10^6, 100 p) collisions"
         else

@@ -28,12 +28,11 @@ program c12_cost
     use sphere_row_tight_qp, only: tight_qp => tight_run
     use sphere_row_tight_dp, only: tight_dp => tight_run
     use sphere_row_tables, only: open_table, tab
-    use sphere_row_study_cli, only: cli_t, start_program, read_keys, fail, stop_unless_normal, &
-        close_tables
+    use sphere_row_study_cli, only: nl, cli_t, start_program, read_keys, fail, &
+        stop_unless_normal, close_tables
     use sphere_row_sorting, only: median
     use sphere_row_kinds, only: dp
     implicit none
-    character(len=*), parameter :: nl = new_line("a")
     !> The two ways of finding the next impact, as calendar_from values.
     integer, parameter :: scan = huge(1), calendar = 2
     character(len=*), parameter :: search_names(2) = ["scan    ", "calendar"]

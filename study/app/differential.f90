@@ -16,10 +16,9 @@ program c12_differential
         status_normal, status_collapsed
     use sphere_row_survey, only: survey_t, survey_open, survey_close, survey_scene
     use sphere_row_tables, only: open_table, tab, split_tabs, row_t, write_rows
-    use sphere_row_study_cli, only: cli_t, start_program, read_keys, stop_unless_normal, &
+    use sphere_row_study_cli, only: nl, cli_t, start_program, read_keys, stop_unless_normal, &
         close_tables, fail
     implicit none
-    character(len=*), parameter :: nl = new_line("a")
     type(cli_t) :: cli
     character(len=:), allocatable :: mode
 

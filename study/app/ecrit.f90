@@ -11,8 +11,8 @@
 program c12_ecrit
     use sphere_row, only: qp, itoa, real_str
     use sphere_row_tables, only: open_table, write_answer, answer_header, tab
-    use sphere_row_study_cli, only: cli_t, start_program, read_keys, fail, stop_unless_normal, &
-        close_tables
+    use sphere_row_study_cli, only: nl, cli_t, start_program, read_keys, fail, &
+        stop_unless_normal, close_tables
     use sphere_row_ecrit, only: ecrit_settings_t, ecrit_row_t, ecrit_row, power_fit, &
         mcnamara_young_k, mcnamara_young_e, outcome_word, row_bytes, row_from_bytes, edge_t, &
         edge_of, scan_point, decimal_text, digits_of, outcome_finite, outcome_certified, &
@@ -20,7 +20,6 @@ program c12_ecrit
     use sphere_row_ranks, only: ranks_t, record_t, ranks_start, ranks_finish, owner_of, &
         gather_records, layout_cyclic
     implicit none
-    character(len=*), parameter :: nl = new_line("a")
     type(cli_t) :: cli
     type(ranks_t) :: ranks
     !> The rows whose rate-map e_c has a published or derived closed form.

@@ -16,10 +16,9 @@ program c12_gas
     use sphere_row_gas_study, only: gas_watch_t, ring_gas, haff_t0
     use sphere_row_ring_dp, only: ring_run
     use sphere_row_tables, only: open_table, write_answer, answer_header, tab
-    use sphere_row_study_cli, only: cli_t, start_program, read_keys, stop_unless_normal, &
+    use sphere_row_study_cli, only: nl, cli_t, start_program, read_keys, stop_unless_normal, &
         close_tables, say
     implicit none
-    character(len=*), parameter :: nl = new_line("a")
     type(cli_t) :: cli
     character(len=:), allocatable :: out
     real(qp), allocatable :: es(:)

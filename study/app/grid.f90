@@ -11,18 +11,17 @@ program c12_grid
         answer_word, status_word, struck_least, short_text
     use sphere_row_survey, only: check_invariants
     use sphere_row_tables, only: open_table, tab
-    use sphere_row_study_cli, only: cli_t, start_program, read_keys, stop_unless_normal, &
-        close_tables, fail
+    use sphere_row_study_cli, only: nl, cli_t, start_program, read_keys, stop_unless_normal, &
+        close_tables, fail, add_run_keys, set_run_keys
     implicit none
-    character(len=*), parameter :: nl = new_line("a")
     !> Multiple of the kind's epsilon by which the invariants may miss, and
     !> the multiple more for each collision a run takes (as c12-collapse).
     real(qp), parameter :: slack = 1.0e4_qp, per_collision = 4.0_qp
     type(cli_t) :: cli
     character(len=:), allocatable :: out
     real(qp), allocatable :: ps(:), es(:)
-    real(qp) :: vtol, again, gap
-    integer :: cap, unit, unit_time, unit_again, stat, i, j, p, disagree
+    real(qp) :: again, gap
+    integer :: unit, unit_time, unit_again, stat, i, j, p, disagree
     character(len=300) :: msg
     type(scene_t) :: scene
     type(run_t) :: run, second
@@ -38,10 +37,7 @@ program c12_grid
         hi=1.0e6_qp)
     call cli%add_reals("es", "0.2,0.3,0.5,0.7,0.8,0.9,0.95", "the restitutions e", lo=0.0_qp, &
         hi=1.0_qp)
-    call cli%add_real("vtol", "-1", "the velocity tolerance of a bounded answer (below 0: the "// &
-        "engine's default)", hi=1.0_qp, hi_open=.true.)
-    call cli%add_int("cap", "0", "the work budget of every run in collisions (0: the engine's "// &
-        "default, max(10^6, 100 p))", lo=0)
+    call add_run_keys(cli)
     call cli%add_real("again", "0", "above 0: every row run again at vtol times this, and "// &
         "OUT/collapse_grid_again.tsv says whether the two answers' velocities agree within "// &
         "the sum of their bounds", lo=0.0_qp, hi=1.0_qp, hi_open=.true.)
@@ -51,8 +47,6 @@ program c12_grid
     es = [0.2_qp, 0.3_qp, 0.5_qp, 0.7_qp, 0.8_qp, 0.9_qp, 0.95_qp]
     if (cli%given("ps")) ps = cli%get_reals("ps")
     if (cli%given("es")) es = cli%get_reals("es")
-    vtol = cli%get_real("vtol")
-    cap = cli%get_int("cap")
     again = cli%get_real("again")
     if (any(ps /= aint(ps))) call fail("c12-grid: ps = "//cli%get_text("ps")// &
         ": allowed whole numbers")
@@ -64,8 +58,7 @@ program c12_grid
         do j = 1, size(es)
             call scene_init(scene, stat, msg, p=p, e=es(j))
             call stop_unless_normal(stat, msg)
-            scene%max_collisions = cap
-            if (vtol >= 0) scene%vtol = vtol
+            call set_run_keys(cli, scene)
             call system_clock(c0, rate)
             call simulate(scene, run)
             call system_clock(c1)

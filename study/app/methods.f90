@@ -14,14 +14,13 @@ program c12_methods
         method_setting, method_v_tol, kind_name, method_engine, method_absolute, method_ode, &
         method_stepping, stepper_rk8pd, stepper_rkf45, engine_methods, method_time
     use sphere_row_kind_engines, only: kind_info, kind_info_t
-    use sphere_row_study_cli, only: cli_t, start_program, read_keys, fail, stop_unless_normal, &
-        close_tables, say
+    use sphere_row_study_cli, only: nl, cli_t, start_program, read_keys, fail, &
+        stop_unless_normal, close_tables, say
     use sphere_row_bisection, only: bisect
     use sphere_row_method_runs, only: scene_at, reference_run, prepare_method
     implicit none
 
     character(len=*), parameter :: name = "c12-methods"
-    character(len=*), parameter :: nl = new_line("a")
     !> The critical restitution of the definition's scene, 3 - 2 sqrt(2).
     real(qp), parameter :: e_crit = 3.0_qp - 2.0_qp*sqrt(2.0_qp)
     !> Closest distance to e_c of the stability map: the reference's count is

@@ -8,9 +8,8 @@ program c12_minimal_loop
     use sphere_row, only: dp, qp, real_str, itoa
     use sphere_row_monte_carlo, only: normal_sampler_t, mc_block_size, mc_block_seed
     use sphere_row_minimal, only: minimal_v4
-    use sphere_row_study_cli, only: cli_t, start_program, read_keys, say
+    use sphere_row_study_cli, only: nl, cli_t, start_program, read_keys, say
     implicit none
-    character(len=*), parameter :: nl = new_line("a")
     !> The definition's law of e.
     real(dp), parameter :: mean = 0.5_dp, sd = 0.05_dp
     type(cli_t) :: cli

@@ -10,9 +10,8 @@ program c12_ring_loop
     use sphere_row_gas, only: gas_state
     use sphere_row_ring_dp, only: ring_dp => ring_run
     use sphere_row_ring_qp, only: ring_qp => ring_run
-    use sphere_row_study_cli, only: cli_t, start_program, read_keys, say
+    use sphere_row_study_cli, only: nl, cli_t, start_program, read_keys, say
     implicit none
-    character(len=*), parameter :: nl = new_line("a")
     type(cli_t) :: cli
     integer :: p, budget, n
     real(qp), allocatable :: gaps(:), v(:), m(:)

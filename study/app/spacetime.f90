@@ -8,12 +8,11 @@
 program c12_spacetime
     use sphere_row, only: qp, scene_t, run_t, event_log_t, simulate, status_invalid, &
         status_max_collisions, status_normal, itoa, short_text
-    use sphere_row_study_cli, only: cli_t, add_scene_keys, start_program, read_keys, fail, &
+    use sphere_row_study_cli, only: nl, cli_t, add_scene_keys, start_program, read_keys, fail, &
         stop_unless_normal, stop_unless_written, say
     use sphere_row_spacetime, only: spacetime_t, write_spacetime, default_every, &
         check_log_size, spheres_most, drawable_collisions
     implicit none
-    character(len=*), parameter :: nl = new_line("a")
     !> Default end of the window, past the last event by this part of its time,
     !> so that the motion after it shows.
     real(qp), parameter :: window_past_end = 0.1_qp

@@ -4,10 +4,9 @@
 program c12_summary
     use sphere_row_tables, only: open_table, tab, split_tabs, file_exists
     use sphere_row, only: qp, short_text
-    use sphere_row_study_cli, only: cli_t, start_program, read_keys, fail, stop_unless_normal, &
-        close_tables
+    use sphere_row_study_cli, only: nl, cli_t, start_program, read_keys, fail, &
+        stop_unless_normal, close_tables
     implicit none
-    character(len=*), parameter :: nl = new_line("a")
     character(len=*), parameter :: tasks(8) = ["a1      ", "a2      ", "b1      ", &
         "b2      ", "c1      ", "c2      ", "collapse", "ecrit   "]
     !> Columns of an answer table whose numbers the prose quotes.

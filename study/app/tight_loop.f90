@@ -8,9 +8,8 @@ program c12_tight_loop
     use sphere_row, only: qp, dp, real_str, itoa
     use sphere_row_tight_qp, only: tight_qp => tight_run
     use sphere_row_tight_dp, only: tight_dp => tight_run
-    use sphere_row_study_cli, only: cli_t, start_program, read_keys, say
+    use sphere_row_study_cli, only: nl, cli_t, start_program, read_keys, say
     implicit none
-    character(len=*), parameter :: nl = new_line("a")
     type(cli_t) :: cli
     integer :: p, budget, n
     real(qp) :: e, t_end, momentum

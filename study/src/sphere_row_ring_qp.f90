@@ -4,10 +4,5 @@ module sphere_row_ring_qp
     use sphere_row, only: wp => qp
     implicit none
     private
-    public :: ring_run
-
-contains
-
     include "sphere_row_ring.inc"
-
 end module sphere_row_ring_qp

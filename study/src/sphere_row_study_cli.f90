@@ -15,7 +15,7 @@
 !> Programs only: the library reports errors by status or `error_t`, a
 !> program decides to stop, and these are the procedures it stops with.
 module sphere_row_study_cli
-    use sphere_row, only: scene_t, status_normal
+    use sphere_row, only: qp, scene_t, status_normal
     use sphere_row_cli, only: cli_t, read_command_line, fail_with => fail
     use sphere_row_scene_keys, only: scene_from_cli, add_scene_keys
     use sphere_row_error, only: error_t, fatal_error, error_output
@@ -25,7 +25,10 @@ module sphere_row_study_cli
     private
     public :: cli_t, add_scene_keys, start_program, read_keys, fail, stop_unless_normal, &
         stop_unless_written, close_tables
-    public :: add_precision_key, precision_is_auto, say
+    public :: add_row_keys, precision_is_auto, add_run_keys, set_run_keys, say, nl
+
+    !> The line break of a program's `about` text.
+    character(len=*), parameter :: nl = new_line("a")
 
     !> The running program's name, the prefix of its messages.
     character(len=:), allocatable :: program_name
@@ -40,20 +43,45 @@ module sphere_row_study_cli
 
 contains
 
-    !> Register the key `precision` of a program whose many runs may each be
-    !> made in the precision they need: auto (the default) or qp.
-    pure subroutine add_precision_key(cli)
+    !> Register the keys of a program of many rows of one scene: the key
+    !> `precision`, each run made in the precision it needs (auto, the default)
+    !> or in real(16) (qp), and the scene keys, e set by `e_set_by`.
+    pure subroutine add_row_keys(cli, e_set_by)
         type(cli_t), intent(inout) :: cli
+        character(len=*), intent(in) :: e_set_by
         call cli%add_choice("precision", "auto", [character(len=4) :: "auto", "qp"], "auto: " &
             //"real(8) where a rounding certificate holds, else real(16); qp: real(16) for " &
             //"every run")
-    end subroutine add_precision_key
+        call add_scene_keys(cli, e_set_by=e_set_by)
+    end subroutine add_row_keys
 
     !> True for precision = auto, false for qp (the registry took no other).
     logical function precision_is_auto(cli) result(auto)
         type(cli_t), intent(in) :: cli
         auto = cli%get_word("precision") == "auto"
     end function precision_is_auto
+
+    !> Register the keys `cap`, `vtol` and `tol` of a study whose runs take the
+    !> engine's default settings unless these are given: one budget and one
+    !> pair of tolerances for every run.
+    pure subroutine add_run_keys(cli)
+        type(cli_t), intent(inout) :: cli
+        call cli%add_int("cap", "0", "the work budget of every run in collisions (0: the " &
+            //"engine's default, max(10^6, 100 p))", lo=0)
+        call cli%add_real("vtol", "-1", "the velocity tolerance of a bounded answer of every " &
+            //"run (below 0: the engine's default)", hi=1.0_qp, hi_open=.true.)
+        call cli%add_real("tol", "-1", "the insignificance tolerance of every run (below 0: " &
+            //"the engine's default, real(16)'s epsilon)", hi=1.0_qp, hi_open=.true.)
+    end subroutine add_run_keys
+
+    !> Give `scene` the settings of the keys of add_run_keys.
+    subroutine set_run_keys(cli, scene)
+        type(cli_t), intent(in) :: cli
+        type(scene_t), intent(inout) :: scene
+        scene%max_collisions = cli%get_int("cap")
+        if (cli%get_real("vtol") >= 0) scene%vtol = cli%get_real("vtol")
+        if (cli%get_real("tol") >= 0) scene%tol = cli%get_real("tol")
+    end subroutine set_run_keys
 
     !> Start the command line of program `name`: `about` is the paragraph of
     !> its `--help` (lines separated by new_line), and the key `out` names the

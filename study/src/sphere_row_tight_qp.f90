@@ -3,11 +3,5 @@ module sphere_row_tight_qp
     use sphere_row, only: wp => qp
     implicit none
     private
-    public :: tight_run
-    include "../../src/engine/sphere_row_bits.inc"
-
-contains
-
     include "sphere_row_tight.inc"
-
 end module sphere_row_tight_qp
