@@ -1,10 +1,11 @@
 !> The collapse region of a struck row: the definition's scene with more
 !> spheres (equal masses, d = a = v0 = 1, every other setting the engine's
-!> default) over a grid of row lengths p and restitutions e, most of it below
-!> the edge e_c(p). Each run's answer, status, collisions, bound and limits,
-!> whether its final velocities keep the momentum and approach nowhere within
-!> their bounds, the least length q0 from which a struck block is proven to
-!> merge at its e, and its wall time (apart, in timing/).
+!> default unless cap, vtol or tol is given) over a grid of row lengths p
+!> and restitutions e, most of it below the edge e_c(p). Each run's answer,
+!> status, collisions, bound and limits, whether its final velocities keep
+!> the momentum and approach nowhere within their bounds, the least length
+!> q0 from which a struck block is proven to merge at its e, and its wall
+!> time (apart, in timing/).
 program c12_grid
     use, intrinsic :: iso_fortran_env, only: int64
     use sphere_row, only: qp, scene_t, run_t, scene_init, simulate, str, itoa, real_str, &
@@ -30,7 +31,8 @@ program c12_grid
 
     call start_program(cli, "c12-grid", &
         "The collapse region: struck rows of equal spheres (d = a = v0 = 1) over a grid of"//nl// &
-        "row lengths p and restitutions e, each run at the engine's default settings."//nl// &
+        "row lengths p and restitutions e, each run at the engine's default settings"//nl// &
+        "unless cap, vtol or tol is given."//nl// &
         "Writes OUT/collapse_grid.tsv (answer, status, collisions, bound, limits, invariants)"// &
         nl//"and the runs' wall times in OUT/timing/collapse_grid.tsv.")
     call cli%add_reals("ps", "50,100,200,1000,10000,100000", "the row lengths p", lo=2.0_qp, &

@@ -6,11 +6,15 @@
 !> A study program registers its keys between `start_program` and
 !> `read_keys`:
 !>
-!>     call start_program(cli, "c12-b2", "C12 task b2: ...")
-!>     call add_scene_keys(cli, e_set_by="the grid of e")
+!>     call start_program(cli, "c12-b2", "C12 task b2: ..."//nl//"Writes ...")
 !>     call cli%add_int("n_grid", "1001", "points of the grid of e in [0, 1]", lo=2)
+!>     call add_row_keys(cli, e_set_by="the grid of e")
 !>     call read_keys(cli, scene)
 !>     n_grid = cli%get_int("n_grid")
+!>
+!> Groups of keys that several programs share: the scene keys
+!> (add_scene_keys), with the key `precision` (add_row_keys), and a
+!> survey's settings of every run (add_run_keys, set_run_keys).
 !>
 !> Programs only: the library reports errors by status or `error_t`, a
 !> program decides to stop, and these are the procedures it stops with.
