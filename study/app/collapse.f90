@@ -111,6 +111,16 @@ contains
             call one_run(scene, i, outcome(rule, i))
         end do
         !$omp end parallel do
+        ! each row's last field, the command that runs it again, made here on
+        ! one thread: scene_command's texts are of deferred length, which
+        ! threads may not make at once
+        do rule = every, fallback
+            do i = 1, merge(n, n_before, rule == every)
+                if (allocated(outcome(rule, i)%row%text)) then
+                    call outcome(rule, i)%row%add(scene_command(rows(i)))
+                end if
+            end do
+        end do
         ! a broken invariant is named, with the command that runs the row again
         do rule = every, fallback
             do i = 1, merge(n, n_before, rule == every)
@@ -124,7 +134,7 @@ contains
     !> Run one row and keep what the tables need of it (an unresolved row's
     !> line of collapse_unanswered.tsv, or an exact or certified row's of
     !> collapse_order_computed.tsv where the check does not prove its order,
-    !> built here on the thread by row_t).
+    !> built here on the thread by row_t, all but its last field, the command).
     subroutine one_run(scene, index, result)
         type(scene_t), intent(in) :: scene
         integer, intent(in) :: index
@@ -155,7 +165,6 @@ contains
                 call result%row%add(answer_word(run%answer))
                 call result%row%add(merge(run%limits%at, run%n, run%limits%n > 0))
                 call result%row%add(trim(why_not))
-                call result%row%add(scene_command(scene))
             end if
         end if
         if (run%answer /= answer_unresolved .or. .not. scene%closed_form_limits) return
@@ -174,7 +183,6 @@ contains
             at = len_trim(groups) + 1
         end do
         call result%row%add(trim(groups))
-        call result%row%add(scene_command(scene))
     end subroutine one_run
 
     !> The survey table, the table per row length, the unresolved rows, the
