@@ -5,7 +5,7 @@ module test_collapse
     use sphere_row, only: qp, dp, scene_t, run_t, event_log_t, scene_init, simulate, &
         kinetic_energy, momentum, status_normal, status_collapsed, status_max_collisions, str, &
         itoa, answer_exact, answer_certified, answer_tolerance, answer_bounded, collapse_proven, &
-        answer_unresolved, answer_word, struck_least
+        answer_unresolved, answer_word, struck_least, event_collision, event_collapse
     use sphere_row_cascade, only: cascade_jump
     use testsuite, only: error_t, unittest_t, new_unittest, check, seed_random, cases, &
         read_text
@@ -224,6 +224,7 @@ contains
             new_unittest("long_rows_answer", test_long_rows), &
             new_unittest("struck_blocks_absorb_in_constant_work", test_struck_sweep), &
             new_unittest("struck_block_proof_by_hand", test_struck_least), &
+            new_unittest("struck_block_absorbed_from_q0_on", test_struck_from_q0), &
             new_unittest("cascade_jump_equals_stepping", test_cascade_jump), &
             new_unittest("shuttle_in_touching_row", test_shuttle_row), &
             new_unittest("rows_end_in_merged_blocks", test_merging_rows), &
@@ -859,6 +860,41 @@ contains
             ends = .false.
         end subroutine struck_cascade
     end subroutine test_struck_least
+
+    !> The struck block's absorption is taken from q0 = struck_least(e) on,
+    !> where its proof holds, and not one sphere below. At e = 0.5 sphere 1
+    !> strikes a touching row of q - 2, which merges into a block (certified)
+    !> and strikes sphere q at rest: for q = q0 the strike is absorbed at
+    !> once (the next event is the limit of spheres 1-q); for q = q0 - 1 its
+    !> cascade is the touching block's rule's, which steps collisions (7,
+    !> measured) before its limit. Both end as one block at v0/q.
+    subroutine test_struck_from_q0(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(scene_t) :: scene
+        type(run_t) :: run
+        type(event_log_t) :: log
+        character(len=200) :: msg
+        integer :: q, q0, strike, stat
+        q0 = struck_least(0.5_qp)
+        do q = q0 - 1, q0
+            call scene_init(scene, stat, msg, p=q, e=0.5_qp, &
+                gaps=[spread(0.0_qp, 1, q - 2), 1.0_qp])
+            call simulate(scene, run, log)
+            strike = findloc(log%kind(1:log%n) == event_collision .and. &
+                log%first(1:log%n) == q - 1 .and. log%last(1:log%n) == q, .true., 1)
+            call check(error, strike > 0 .and. strike < log%n, "q = "//itoa(q) &
+                //": no strike of sphere q followed by an event, in "//itoa(log%n))
+            if (allocated(error)) return
+            call check(error, (log%kind(strike + 1) == event_collapse) .eqv. (q >= q0), &
+                "q = "//itoa(q)//", q0 = "//itoa(q0)//": the strike's next event is a " &
+                //merge("collapse ", "collision", log%kind(strike + 1) == event_collapse))
+            if (allocated(error)) return
+            call check(error, run%answer == answer_certified .and. &
+                maxval(abs(run%v - 1.0_qp/q)) <= 64*epsilon(1.0_qp), "q = "//itoa(q) &
+                //": answer "//answer_word(run%answer)//", not one block at v0/q")
+            if (allocated(error)) return
+        end do
+    end subroutine test_struck_from_q0
 
     !> A light sphere shuttling between two heavy ones while other contacts
     !> wait: the jump over the shuttle's periods (doubling its period map)
