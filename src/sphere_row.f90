@@ -10,9 +10,8 @@ module sphere_row
     use sphere_row_kinds, only: sp, dp, xdp, qp
     use sphere_row_status, only: status_normal, status_collapsed, status_max_collisions, &
         status_invalid, status_horizon, event_start, event_collision, event_collapse, &
-        event_sample, status_word, status_text, &
-        status_word_length, answer_exact, answer_certified, answer_tolerance, answer_bounded, &
-        answer_unresolved, answer_word
+        event_sample, status_word, status_words, answer_exact, answer_certified, &
+        answer_tolerance, answer_bounded, answer_unresolved, answer_word, answer_words
     use sphere_row_format, only: real_str, short_text, itoa, real_text, int_text, &
         number_text_length
     use sphere_row_engine_qp, only: scene_t, run_t, observer_t, state_now => state_now_wp, &
@@ -61,9 +60,9 @@ module sphere_row
     public :: status_normal, status_collapsed, status_max_collisions, status_invalid
     public :: event_start, event_collision, event_collapse, status_word, real_str, &
         short_text, itoa
-    public :: status_text, status_word_length, real_text, int_text, number_text_length
+    public :: status_words, real_text, int_text, number_text_length
     public :: answer_exact, answer_certified, answer_tolerance, answer_bounded, &
-        answer_unresolved, answer_word
+        answer_unresolved, answer_word, answer_words
     public :: scene_t, run_t, event_log_t, observer_t, state_now
 #ifdef SPHERE_ROW_XDP
     public :: scene_xdp_t, run_xdp_t, event_log_xdp_t

@@ -8,9 +8,9 @@ module sphere_row_status
     public :: status_normal, status_collapsed, status_max_collisions, status_invalid
     public :: status_negative_gap, status_budget, status_solver_failed, status_horizon
     public :: event_start, event_collision, event_collapse, event_sample
-    public :: status_word, status_text, status_word_length
+    public :: status_word, status_words
     public :: answer_exact, answer_certified, answer_tolerance, answer_bounded, &
-        answer_unresolved, answer_word
+        answer_unresolved, answer_word, answer_words
 
     !> The run ended by the definition's criterion: no gap is closing any more.
     integer, parameter :: status_normal = 0
@@ -37,9 +37,6 @@ module sphere_row_status
     !> state returned is the one at t_max (a ring or a box with e < 1 has no
     !> end; a row that separated before t_max ends normal).
     integer, parameter :: status_horizon = 7
-
-    !> Length of the buffer of status_text, enough for every status word.
-    integer, parameter :: status_word_length = 16
 
     !> Event kinds of the optional event record.
     integer, parameter :: event_start = 0, event_collision = 1, event_collapse = 2
@@ -69,65 +66,42 @@ module sphere_row_status
     !> active are named, with the bound reached on them.
     integer, parameter :: answer_unresolved = 5
 
+    !> The words printed for the status codes (status_normal to
+    !> status_horizon) and the answer codes (0: none yet, then answer_exact to
+    !> answer_unresolved), padded with blanks. status_word and answer_word
+    !> trim them; where threads make texts at once, trim(status_words(s)) is
+    !> the word without a character function of deferred length, whose length
+    !> gfortran 12 keeps in a static variable of the caller.
+    character(len=*), parameter :: status_words(0:7) = [character(len=16) :: "normal", &
+        "quasi_plastic", "max_collisions", "invalid", "negative_gap", "budget_exhausted", &
+        "solver_failed", "horizon"]
+    character(len=*), parameter :: answer_words(0:5) = [character(len=10) :: "none", &
+        "exact", "certified", "tolerance", "bounded", "unresolved"]
+
 contains
 
-    !> The word printed for an answer code.
+    !> The word printed for an answer code: its answer_words entry, or none
+    !> for a code outside them.
     pure function answer_word(answer) result(word)
         integer, intent(in) :: answer
         character(len=:), allocatable :: word
-        select case (answer)
-        case (answer_exact)
-            word = "exact"
-        case (answer_certified)
-            word = "certified"
-        case (answer_tolerance)
-            word = "tolerance"
-        case (answer_bounded)
-            word = "bounded"
-        case (answer_unresolved)
-            word = "unresolved"
-        case default
-            word = "none"
-        end select
+        word = word_of(answer_words, answer, "none")
     end function answer_word
 
-    !> The word printed for a status code.
+    !> The word printed for a status code: its status_words entry, or unknown
+    !> for a code outside them.
     pure function status_word(status) result(word)
         integer, intent(in) :: status
         character(len=:), allocatable :: word
-        character(len=status_word_length) :: text
-        integer :: length
-        call status_text(status, text, length)
-        word = text(:length)
+        word = word_of(status_words, status, "unknown")
     end function status_word
 
-    !> status_word into `text`, its first `length` characters: no character
-    !> result of deferred length, whose length gfortran 12 keeps in a static
-    !> variable of the caller, so threads may call it at once.
-    pure subroutine status_text(status, text, length)
-        integer, intent(in) :: status
-        character(len=status_word_length), intent(out) :: text
-        integer, intent(out) :: length
-        select case (status)
-        case (status_normal)
-            text = "normal"
-        case (status_collapsed)
-            text = "quasi_plastic"
-        case (status_max_collisions)
-            text = "max_collisions"
-        case (status_invalid)
-            text = "invalid"
-        case (status_negative_gap)
-            text = "negative_gap"
-        case (status_budget)
-            text = "budget_exhausted"
-        case (status_solver_failed)
-            text = "solver_failed"
-        case (status_horizon)
-            text = "horizon"
-        case default
-            text = "unknown"
-        end select
-        length = len_trim(text)
-    end subroutine status_text
+    !> words(code) without its padding, or `other` for a code outside them.
+    pure function word_of(words, code, other) result(word)
+        character(len=*), intent(in) :: words(0:), other
+        integer, intent(in) :: code
+        character(len=:), allocatable :: word
+        word = other
+        if (code >= 0 .and. code < size(words)) word = trim(words(code))
+    end function word_of
 end module sphere_row_status

@@ -9,8 +9,8 @@
 program c12_collapse
     use, intrinsic :: iso_fortran_env, only: int64, error_unit
     use sphere_row, only: qp, scene_t, run_t, simulate, str, itoa, real_str, answer_word, &
-        answer_exact, answer_certified, answer_tolerance, answer_bounded, answer_unresolved, &
-        order_premise
+        answer_words, answer_exact, answer_certified, answer_tolerance, answer_bounded, &
+        answer_unresolved, order_premise
     use sphere_row_survey, only: survey_t, survey_open, survey_close, survey_scene, &
         check_invariants, scene_command
     use sphere_row_sorting, only: sort
@@ -162,7 +162,7 @@ contains
                 call result%row%add(index)
                 call result%row%add(scene%p)
                 call result%row%add(scene%e)
-                call result%row%add(answer_word(run%answer))
+                call result%row%add(trim(answer_words(run%answer)))
                 call result%row%add(merge(run%limits%at, run%n, run%limits%n > 0))
                 call result%row%add(trim(why_not))
             end if

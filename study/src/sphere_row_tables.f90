@@ -10,7 +10,7 @@
 module sphere_row_tables
     use, intrinsic :: iso_fortran_env, only: int64
     use sphere_row, only: qp, status_normal, status_invalid, real_text, int_text, &
-        number_text_length, status_text, status_word_length
+        number_text_length, status_words
     use sphere_row_system, only: rename_file, remove_file, system_error_text, text_out_t
     use sphere_row_error, only: error_t
     implicit none
@@ -38,8 +38,8 @@ module sphere_row_tables
     character(len=:), allocatable :: reporter
 
     !> One row of a table, built field by field (tab-separated) where OpenMP
-    !> threads build rows at once: numbers and words are written into
-    !> buffers of fixed length by real_text, int_text and status_text and
+    !> threads build rows at once: numbers are written into buffers of fixed
+    !> length by real_text and int_text, words trimmed from status_words, and
     !> appended, never made by a character function of deferred length
     !> (gfortran 12 keeps the length of such a result in a static variable of
     !> the caller, which two threads then share).
@@ -108,10 +108,7 @@ contains
     pure subroutine row_add_status(row, status)
         class(row_t), intent(inout) :: row
         integer, intent(in) :: status
-        character(len=status_word_length) :: text
-        integer :: length
-        call status_text(status, text, length)
-        call row%add_text(text(:length))
+        call row%add_text(trim(status_words(status)))
     end subroutine row_add_status
 
     !> The rows' texts, one line each and in order, onto the formatted `unit`:
