@@ -108,7 +108,11 @@ contains
     pure subroutine row_add_status(row, status)
         class(row_t), intent(inout) :: row
         integer, intent(in) :: status
-        call row%add_text(trim(status_words(status)))
+        if (status < lbound(status_words, 1) .or. status > ubound(status_words, 1)) then
+            call row%add_text("unknown")
+        else
+            call row%add_text(trim(status_words(status)))
+        end if
     end subroutine row_add_status
 
     !> The rows' texts, one line each and in order, onto the formatted `unit`:
