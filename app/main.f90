@@ -5,13 +5,13 @@ program sphere_row_main
         status_invalid, status_normal, event_collision, event_collapse, itoa, auto_t, &
         simulate_auto, simulate_in_dp, answer_word, answer_certified, answer_unresolved, &
         answer_exact, real_str, collapse_proven, budget, sphere_row_version, order_premise, &
-        order_premise_in_dp
+        order_premise_in_dp, velocity_bound
     use sphere_row_cli, only: cli_t, read_command_line, fail
     use sphere_row_scene_keys, only: add_scene_keys, add_state_keys, scene_from_cli, &
         check_scene_in_dp
     use sphere_row_error, only: error_t, fatal_error
     use sphere_row_format, only: short_text, real_text, int_text, number_text_length, &
-        put_exponent, finite
+        earned_text, finite
     use sphere_row_read, only: printable, read_real
     use sphere_row_system, only: text_out_t, stderr_is_terminal, system_error_text, path_kind, &
         path_missing, path_regular
@@ -391,7 +391,7 @@ contains
         if (precision_word == "auto") then
             bound = 0
             do j = 1, size(run%v)
-                bound = max(bound, sphere_bound(j))
+                bound = max(bound, velocity_bound(run, auto, j))
             end do
         end if
         if (wanted("answer")) call out%put("answer "//answer_word(run%answer))
@@ -490,101 +490,21 @@ contains
         wanted = print_list == ",all," .or. index(print_list, ","//name//",") > 0
     end function wanted
 
-    !> Lines `v<i> <v_i>`, each with the digits its bound leaves: every digit
-    !> of real(16) where it is 0 (no bound known) or not finite, else the
-    !> digits down to the bound's leading one; a velocity below that decade
-    !> reads rounded there, as -1, 0 or 1 times its power of ten (sphere_bound
-    !> gives each sphere's bound). Each line is assembled in place, as
-    !> put_numbered's: a long row's answer has a million.
+    !> Lines `v<i> <v_i>`, each with the digits its bound leaves (earned_text:
+    !> every digit of the kind that answered where the bound is 0 or not
+    !> finite, else down to the bound's decade, and below it rounded there as
+    !> q times its power of ten; velocity_bound gives each sphere's bound). Each
+    !> line is assembled in place, as put_numbered's: a long row's answer has
+    !> a million.
     subroutine write_velocities()
-        real(qp) :: bound
-        integer :: i, digits, place, q, n_text, last_q, last_place, n_last
-        character(len=number_text_length) :: text, last
-        ! (the last q 10^place written: a long row's zero velocities share
-        ! their bound's decade, sphere after sphere)
-        n_last = 0
-        last_q = 0
-        last_place = 0
+        integer :: i, n_text
+        character(len=number_text_length) :: text
         do i = 1, size(run%v)
-            bound = sphere_bound(i)
-            if (.not. (bound > 0 .and. bound <= huge(bound))) then
-                call put_numbered("v", i, run%v(i))
-                cycle
-            end if
-            place = decade(bound)
-            digits = 0
-            if (run%v(i) /= 0) digits = min(precision_digits, decade(abs(run%v(i))) - place + 1)
-            if (digits >= 2) then
-                call real_text(run%v(i), digits, text, n_text)
-            else
-                ! (a velocity of 0, the most of a long elastic row's, needs
-                ! no power of ten)
-                q = 0
-                if (run%v(i) /= 0) then
-                    ! (10^-place in two factors: each within range at every scale)
-                    q = nint(run%v(i)*10.0_qp**(-place/2)*10.0_qp**(place/2 - place))
-                    ! (0.96 at a bound's decade of 0.1 rounds to 1E+00, not 10E-01)
-                    if (abs(q) == 10) then
-                        q = q/10
-                        place = place + 1
-                    end if
-                end if
-                if (n_last == 0 .or. q /= last_q .or. place /= last_place) then
-                    call power_text(q, place, last, n_last)
-                    last_q = q
-                    last_place = place
-                end if
-                text = last
-                n_text = n_last
-            end if
+            call earned_text(run%v(i), velocity_bound(run, auto, i), text, n_text, &
+                precision_digits)
             call put_line("v", i, text(:n_text))
         end do
     end subroutine write_velocities
-
-    !> The text `<q>E<place>` of q 10^place, the exponent signed in two places,
-    !> or four beyond 99, as real_str writes one: 1E-02, -1E+00, 0E-33.
-    pure subroutine power_text(q, place, text, length)
-        integer, intent(in) :: q, place
-        character(len=number_text_length), intent(out) :: text
-        integer, intent(out) :: length
-        call int_text(int(q, int64), text, length)
-        call put_exponent(place, merge(2, 4, abs(place) < 100), text, length)
-    end subroutine power_text
-
-    !> Sphere i's bound: its own (run%v_bounds, its rounding included) where
-    !> the run gives one, else the run's. With precision=auto and its
-    !> certificate (whose answers are exact: rounding only), the smaller of
-    !> that and the certificate's bound of the same rounding.
-    pure real(qp) function sphere_bound(i) result(bound)
-        integer, intent(in) :: i
-        bound = run%v_bound
-        if (allocated(run%v_bounds)) bound = run%v_bounds(i)
-        ! (auto's flag first: the words are compared only where it is set)
-        if (auto%certified) then
-            if (precision_word == "auto" .and. run%answer == answer_exact .and. &
-                allocated(auto%v_bounds)) bound = min(bound, auto%v_bounds(i))
-        end if
-    end function sphere_bound
-
-    !> floor(log10(x)) of x > 0: from real(8)'s log10 where x is in its range
-    !> and the logarithm is not within 1e-9 of an integer (its rounding, about
-    !> 1e-16, cannot then move the floor), else from real(16)'s, twenty times
-    !> slower (two of them per sphere of a long row's answer).
-    pure integer function decade(x)
-        real(qp), intent(in) :: x
-        real(dp) :: l
-        ! (the range told in real(8), where a comparison is no call: x rounded
-        ! into tiny or huge of real(8) has their decade)
-        l = real(x, dp)
-        if (l >= tiny(1.0_dp) .and. l <= huge(1.0_dp)) then
-            l = log10(l)
-            if (abs(l - anint(l)) > 1.0e-9_dp) then
-                decade = floor(l)
-                return
-            end if
-        end if
-        decade = floor(log10(x))
-    end function decade
 
     !> Lines `<name><i> <values(i)>`.
     subroutine write_numbered(name, values)

@@ -7,7 +7,7 @@ module sphere_row_watch
     use, intrinsic :: iso_fortran_env, only: error_unit, int64
     use sphere_row, only: qp, run_t, scene_t, observer_t, state_now, itoa, event_collision, &
         event_collapse, event_sample, real_text, int_text, number_text_length, real_str, &
-        gaps_at_time, velocities_now
+        earned_str, gaps_at_time, velocities_now
     use sphere_row_system, only: text_out_t
     implicit none
     private
@@ -202,7 +202,7 @@ contains
             end if
         end if
         call self%sample_out%put(real_str(t, precision(t) + 1)//achar(9) &
-            //earned(temperature, t_bound)//achar(9)//earned(energy, e_bound)//achar(9) &
+            //earned_str(temperature, t_bound)//achar(9)//earned_str(energy, e_bound)//achar(9) &
             //real_str(2.0_qp*real(run%n, qp)/p, 6)//achar(9)//itoa(clusters))
         self%k = self%k + 1
         self%wake = next_sample(self)
@@ -226,18 +226,6 @@ contains
             t = self%scene%t_max*10.0_qp**(real(self%k - 1 - last, qp)/self%per_decade)
         end if
     end function next_sample
-
-    !> x written to the decade of its bound (every digit of real(16) if the
-    !> bound is 0, one if the bound reaches x's own decade).
-    pure function earned(x, bound) result(text)
-        real(qp), intent(in) :: x, bound
-        character(len=:), allocatable :: text
-        integer :: digits
-        digits = precision(x) + 1
-        if (bound > 0 .and. x /= 0) digits = max(1, min(digits, &
-            floor(log10(abs(x))) - floor(log10(bound)) + 1))
-        text = real_str(x, digits)
-    end function earned
 
     !> The progress line: the collisions against the work budget, the time
     !> reached, and the fastest rate at which neighbours still close (the

@@ -13,7 +13,7 @@ module sphere_row
         event_sample, status_word, status_words, answer_exact, answer_certified, &
         answer_tolerance, answer_bounded, answer_unresolved, answer_word, answer_words
     use sphere_row_format, only: real_str, short_text, itoa, real_text, int_text, &
-        number_text_length
+        number_text_length, earned_str, earned_text
     use sphere_row_engine_qp, only: scene_t, run_t, observer_t, state_now => state_now_wp, &
         event_log_t, scene_init_qp => scene_init_wp, &
         scene_check_qp => scene_check_wp, simulate_qp => simulate_wp, &
@@ -53,14 +53,15 @@ module sphere_row
         order_check_sp => order_check_wp, order_premise_sp => order_premise_wp, &
         collapse_proven_sp => collapse_proven_wp, gaps_at_time_sp => gaps_at_time_wp, &
         velocities_now_sp => velocities_now_wp, comparisons_sp => comparisons_wp
-    use sphere_row_auto, only: auto_t, simulate_auto, simulate_in_dp, order_premise_in_dp
+    use sphere_row_auto, only: auto_t, simulate_auto, simulate_in_dp, order_premise_in_dp, &
+        velocity_bound
     implicit none
     private
     public :: sp, dp, xdp, qp
     public :: status_normal, status_collapsed, status_max_collisions, status_invalid
     public :: event_start, event_collision, event_collapse, status_word, real_str, &
         short_text, itoa
-    public :: status_words, real_text, int_text, number_text_length
+    public :: status_words, real_text, int_text, number_text_length, earned_str, earned_text
     public :: answer_exact, answer_certified, answer_tolerance, answer_bounded, &
         answer_unresolved, answer_word, answer_words
     public :: scene_t, run_t, event_log_t, observer_t, state_now
@@ -70,7 +71,8 @@ module sphere_row
     public :: scene_dp_t, run_dp_t, event_log_dp_t
     public :: scene_sp_t, run_sp_t, event_log_sp_t
     public :: scene_init, scene_check, simulate, gaps_at, kinetic_energy, momentum, str, budget
-    public :: bounds_t, bounds_dp_t, bounds_sp_t, simulate_certified, auto_t, simulate_auto
+    public :: bounds_t, bounds_dp_t, bounds_sp_t, simulate_certified, auto_t, simulate_auto, &
+        velocity_bound
     public :: simulate_in_dp, order_premise_in_dp, collapse_proven, struck_least, order_check, &
         order_premise, gaps_at_time, velocities_now, status_horizon, event_sample, comparisons
     public :: sphere_row_version

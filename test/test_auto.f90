@@ -4,8 +4,9 @@
 module test_auto
     use sphere_row, only: qp, dp, scene_t, run_t, event_log_t, scene_init, simulate, &
         scene_dp_t, run_dp_t, event_log_dp_t, bounds_dp_t, simulate_certified, auto_t, &
-        simulate_auto, itoa, order_check, order_premise, order_premise_in_dp
+        simulate_auto, itoa, order_check, order_premise, order_premise_in_dp, simulate_in_dp
     use testsuite, only: error_t, unittest_t, new_unittest, check, cases
+    use test_support, only: bounded_row
     implicit none
     private
     public :: collect_auto
@@ -31,9 +32,44 @@ contains
             new_unittest("auto_at_extreme_scales", test_extreme_scales), &
             new_unittest("auto_long_row_in_real128_once", test_long_row), &
             new_unittest("order_check_stops_where_exact_order_leaves", test_order_check), &
-            new_unittest("order_premise_is_the_runs_own_order", test_order_premise) &
+            new_unittest("order_premise_is_the_runs_own_order", test_order_premise), &
+            new_unittest("in_dp_keeps_the_limits", test_in_dp_limits) &
             ]
     end function collect_auto
+
+    !> A run made in real(8) for a real(16) caller (simulate_in_dp, as
+    !> simulate_auto's answer in real(8)) carries the real(8) run's record of
+    !> its limits whole: bounded_row, in real(8) too, takes a bounded limit,
+    !> whose bound sums into limits%norm.
+    subroutine test_in_dp_limits(error)
+        type(error_t), allocatable, intent(out) :: error
+        type(scene_t) :: scene
+        type(scene_dp_t) :: low
+        type(run_t) :: run
+        type(run_dp_t) :: direct
+        integer :: stat
+        character(len=200) :: msg
+        call bounded_row(scene)
+        call simulate_in_dp(scene, run)
+        call scene_init(low, stat, msg, p=20, e=0.5_dp, gaps=spread(0.0_dp, 1, 19))
+        low%closed_form_limits = scene%closed_form_limits
+        low%vtol = real(scene%vtol, dp)
+        call simulate(low, direct)
+        call check(error, direct%limits%bounded > 0 .and. direct%limits%norm > 0, &
+            "the premise: a bounded limit in real(8), "//itoa(direct%limits%bounded))
+        if (allocated(error)) return
+        call check(error, run%limits%n == direct%limits%n .and. &
+            run%limits%closed_form == direct%limits%closed_form .and. &
+            run%limits%exact == direct%limits%exact .and. &
+            run%limits%certified == direct%limits%certified .and. &
+            run%limits%tolerance == direct%limits%tolerance .and. &
+            run%limits%bounded == direct%limits%bounded .and. &
+            run%limits%first == direct%limits%first .and. &
+            run%limits%last == direct%limits%last .and. run%limits%at == direct%limits%at .and. &
+            run%limits%t == real(direct%limits%t, qp) .and. &
+            run%limits%norm == real(direct%limits%norm, qp), &
+            "simulate_in_dp's limits differ from the real(8) run's")
+    end subroutine test_in_dp_limits
 
     !> Near e_crit real64 is not enough; auto answers as real128 does.
     subroutine test_near_critical(error)

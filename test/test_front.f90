@@ -15,7 +15,8 @@ module test_front
     use sphere_row_scene_keys, only: add_scene_keys, scene_from_cli, check_scene_in_dp
     use sphere_row_read, only: read_real, read_int, read_reals, is_real_text, is_int_text, &
         printable
-    use sphere_row_format, only: short_text, real_text, number_text_length
+    use sphere_row_format, only: short_text, real_text, number_text_length, earned_str, &
+        real_str
     use sphere_row_error, only: input_error_t => error_t
     use testsuite, only: error_t, unittest_t, new_unittest, check, read_text, count_lines
     use test_cli, only: program_path
@@ -52,6 +53,7 @@ contains
             new_unittest("int_syntax", test_int_syntax), &
             new_unittest("printable_and_short_text", test_printable), &
             new_unittest("real_text_as_formatted_write", test_real_text), &
+            new_unittest("earned_digits_down_to_the_bound", test_earned), &
             new_unittest("help_from_registry", test_help), &
             new_unittest("range_on_the_digits", test_range_digits), &
             new_unittest("scene_file_linear_time", test_linear_reading), &
@@ -459,6 +461,47 @@ contains
         call check(error, short_text(huge(1.0_qp), 3, "down") == "1.18e4932", &
             "huge rounded down: "//short_text(huge(1.0_qp), 3, "down"))
     end subroutine test_printable
+
+    !> earned_str writes x down to its bound's decade: every digit asked for
+    !> where the bound is 0; the digits from x's decade to the bound's; below
+    !> two of them, x rounded at the bound's decade (a carry to the next
+    !> decade, a zero, an exponent of four places, none earned by huge). A
+    !> bound 1e-20 below 1e-33, relatively, has decade -34, though it rounds
+    !> to real(8)'s 1e-33, whose log10 is -33.
+    subroutine test_earned(error)
+        type(error_t), allocatable, intent(out) :: error
+        type :: case_t
+            real(qp) :: x, bound
+            character(len=12) :: text
+        end type case_t
+        type(case_t), parameter :: cases(*) = [ &
+            case_t(2.5_qp, 0.0_qp, "2.50E+00"), &
+            case_t(2.5_qp, huge(1.0_qp), "0E+4932"), &
+            case_t(0.123456_qp, 1.0e-2_qp, "1.2E-01"), &
+            case_t(0.123456_qp, 9.9e-3_qp, "1.23E-01"), &
+            case_t(0.123456_qp, 1.0e-10_qp, "1.23E-01"), &
+            case_t(1.5e-99_qp, 1.0e-100_qp, "1.5E-99"), &
+            case_t(-0.34_qp, 0.2_qp, "-3E-01"), &
+            case_t(0.96_qp, 0.1_qp, "1E+00"), &
+            case_t(1.0_qp, 1.0_qp, "1E+00"), &
+            case_t(0.003_qp, 0.1_qp, "0E-01"), &
+            case_t(0.0_qp, 1.0e-33_qp, "0E-33"), &
+            case_t(0.0_qp, 1.0e-33_qp*(1 - 1.0e-20_qp), "0E-34"), &
+            case_t(7.0e-120_qp, 1.0e-120_qp, "7E-0120")]
+        integer :: i
+        character(len=:), allocatable :: got
+        do i = 1, size(cases)
+            got = earned_str(cases(i)%x, cases(i)%bound, 3)
+            call check(error, got == trim(cases(i)%text), short_text(cases(i)%x)//" within " &
+                //short_text(cases(i)%bound)//": "//got//", not "//trim(cases(i)%text))
+            if (allocated(error)) return
+        end do
+        call check(error, earned_str(1.0_qp/3, 0.0_qp) == real_str(1.0_qp/3, &
+            precision(1.0_qp) + 1), "an exact third: not every digit of real(16)")
+        call check(error, earned_str(0.123_qp, 1.0e-30_qp, 1) == "1.2E-01", &
+            "0.123 within 1e-30 at most 1 digit: "//earned_str(0.123_qp, 1.0e-30_qp, 1) &
+            //", not 1.2E-01 (2 digits at the least)")
+    end subroutine test_earned
 
     !> real_text, made without formatted I/O, gives the very text of Fortran's
     !> ES edit descriptor that it stands for: random significands with binary

@@ -13,6 +13,7 @@ module test_labels
         answer_tolerance, answer_certified, answer_bounded, answer_word
     use testsuite, only: error_t, unittest_t, new_unittest, check, read_text
     use test_cli, only: program_path
+    use test_support, only: bounded_row
     implicit none
     private
     public :: collect_labels
@@ -91,11 +92,7 @@ contains
         type(error_t), allocatable, intent(out) :: error
         type(scene_t) :: scene
         type(run_t) :: run
-        integer :: stat
-        character(len=200) :: msg
-        call scene_init(scene, stat, msg, p=20, e=0.5_qp, gaps=spread(0.0_qp, 1, 19))
-        scene%closed_form_limits = .false.
-        scene%vtol = 1.0e-6_qp
+        call bounded_row(scene)
         call simulate(scene, run)
         call check(error, run%limits%bounded > 0 .and. run%limits%tolerance == 0 .and. &
             .not. run%clock%passed, "the premise: bounded limits "//itoa(run%limits%bounded)// &

@@ -11,7 +11,7 @@ module test_support
     use testsuite, only: error_t
     implicit none
     private
-    public :: scene_of, random_row, words, split_tabs, read_reals, run_and_rerun
+    public :: scene_of, random_row, words, split_tabs, read_reals, run_and_rerun, bounded_row
 
 contains
 
@@ -34,6 +34,18 @@ contains
             error%message = "scene "//keys//" refused: "//refused%message
         end if
     end subroutine scene_of
+
+    !> The touching row of 20 at e = 1/2 with the closed-form limits off and
+    !> vtol = 1e-6: its cascade is taken to its pooling as a bounded limit
+    !> (its cone bound within vtol), and nothing is taken at tolerance.
+    subroutine bounded_row(scene)
+        type(scene_t), intent(out) :: scene
+        integer :: stat
+        character(len=200) :: msg
+        call scene_init(scene, stat, msg, p=20, e=0.5_qp, gaps=spread(0.0_qp, 1, 19))
+        scene%closed_form_limits = .false.
+        scene%vtol = 1.0e-6_qp
+    end subroutine bounded_row
 
     !> The run of `scene` (`first`), then the run of the same scene with the
     !> settings given changed (`second`): a finer tol, another vtol or

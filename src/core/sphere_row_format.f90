@@ -4,11 +4,11 @@
 module sphere_row_format
     use, intrinsic :: iso_fortran_env, only: int64
     use, intrinsic :: ieee_arithmetic, only: ieee_is_negative
-    use sphere_row_kinds, only: qp
+    use sphere_row_kinds, only: dp, qp
     implicit none
     private
     public :: real_str, short_text, itoa, real_text, int_text, number_text_length, put_exponent, &
-        finite
+        finite, earned_str, earned_text
 
     !> Length of the buffers of real_text (enough for up to 52 digits) and
     !> int_text.
@@ -153,6 +153,80 @@ contains
             length = at
         end if
     end subroutine real_text
+
+    !> x written down to the decade of its bound and no further, as sphere-row
+    !> writes a velocity: with `most` significant digits (default every digit
+    !> of real(16); no fewer than 2) where the bound is 0 (x exact), or NaN or
+    !> infinite (no bound to go by); else with the digits from x's decade down
+    !> to the bound's, at most `most`. Where fewer than two digits are earned, x
+    !> rounded at the bound's decade as q 10^place: 0E-33 for 0 within
+    !> 1e-33, 1E+00 for 0.96 within 0.1, 0E-01 for 0.003 within 0.1, 0E+4932
+    !> within huge (the engine's bound where it has none).
+    pure function earned_str(x, bound, most) result(str)
+        real(qp), intent(in) :: x, bound
+        integer, intent(in), optional :: most
+        character(len=:), allocatable :: str
+        character(len=number_text_length) :: buf
+        integer :: length
+        call earned_text(x, bound, buf, length, most)
+        str = buf(:length)
+    end function earned_str
+
+    !> earned_str into `text`, its first `length` characters (as real_text
+    !> is real_str's: made without I/O, callable from threads at once).
+    pure subroutine earned_text(x, bound, text, length, most)
+        real(qp), intent(in) :: x, bound
+        character(len=number_text_length), intent(out) :: text
+        integer, intent(out) :: length
+        integer, intent(in), optional :: most
+        integer :: digits, earned, place, q
+        digits = precision(x) + 1
+        if (present(most)) digits = max(2, most)
+        if (.not. (bound > 0 .and. bound <= huge(bound))) then
+            call real_text(x, digits, text, length)
+            return
+        end if
+        place = decade(bound)
+        earned = 0
+        if (x /= 0) earned = decade(abs(x)) - place + 1
+        if (earned >= 2) then
+            call real_text(x, min(digits, earned), text, length)
+            return
+        end if
+        ! (|x| < 10^(place + 1) here, so |q| <= 10; 10^-place in two factors,
+        ! each within range at every scale)
+        q = 0
+        if (x /= 0) q = nint(x*10.0_qp**(-place/2)*10.0_qp**(place/2 - place))
+        if (abs(q) == 10) then
+            q = q/10
+            place = place + 1
+        end if
+        call int_text(int(q, int64), text, length)
+        call put_exponent(place, merge(2, 4, abs(place) < 100), text, length)
+    end subroutine earned_text
+
+    !> floor(log10(x)) of x > 0: from real(8)'s log10 where x is in its range
+    !> and the logarithm is not within 1e-9 of an integer (its rounding, about
+    !> 1e-16, cannot then move the floor), else from real(16)'s, twenty times
+    !> slower (two of them per sphere of a long row's answer). Within about
+    !> 1e-33 of a power of ten, relatively, real(16)'s log10 rounds to the
+    !> integer: x just below 10^k has decade k (a bound's then ends one digit
+    !> sooner; a value's text rounds to 10^k).
+    pure integer function decade(x)
+        real(qp), intent(in) :: x
+        real(dp) :: l
+        ! (the range told in real(8), where a comparison is no call: x rounded
+        ! into tiny or huge of real(8) has their decade)
+        l = real(x, dp)
+        if (l >= tiny(1.0_dp) .and. l <= huge(1.0_dp)) then
+            l = log10(l)
+            if (abs(l - anint(l)) > 1.0e-9_dp) then
+                decade = floor(l)
+                return
+            end if
+        end if
+        decade = floor(log10(x))
+    end function decade
 
     !> `E`, the sign and |power| in at least `places` places (2 or 4), put
     !> into `text` after its first `length` characters; `length` moves past

@@ -8,7 +8,7 @@
 !> rules, once (the certificate is applied there too only if asked for).
 module sphere_row_auto
     use sphere_row_kinds, only: dp, qp
-    use sphere_row_status, only: event_collision, status_invalid
+    use sphere_row_status, only: event_collision, status_invalid, answer_exact
     use sphere_row_engine_qp, only: scene_t, run_t, bounds_t, event_log_t, simulate_wp, &
         simulate_certified_wp
     use sphere_row_engine_dp, only: scene_dp_t => scene_t, run_dp_t => run_t, &
@@ -17,7 +17,7 @@ module sphere_row_auto
         order_premise_dp => order_premise_wp
     implicit none
     private
-    public :: auto_t, simulate_auto, simulate_in_dp, order_premise_in_dp
+    public :: auto_t, simulate_auto, simulate_in_dp, order_premise_in_dp, velocity_bound
 
     !> Which precision answered a scene and how far its results may be from
     !> exact arithmetic's.
@@ -119,6 +119,23 @@ contains
                 log_low%kind(1:log_low%n) == event_collision)
         end subroutine try_real64
     end subroutine simulate_auto
+
+    !> The bound on sphere i's final velocity, as sphere-row writes it: the
+    !> sphere's own (run%v_bounds, its rounding included) where the run gives
+    !> one, else run%v_bound; where simulate_auto's certificate holds and the
+    !> answer is exact (rounding only), the smaller of that and the
+    !> certificate's bound of the same rounding. `auto` as simulate_auto left
+    !> it (a default auto_t for a run made otherwise).
+    pure real(qp) function velocity_bound(run, auto, i) result(bound)
+        type(run_t), intent(in) :: run
+        type(auto_t), intent(in) :: auto
+        integer, intent(in) :: i
+        bound = run%v_bound
+        if (allocated(run%v_bounds)) bound = run%v_bounds(i)
+        if (auto%certified .and. run%answer == answer_exact .and. allocated(auto%v_bounds)) then
+            bound = min(bound, auto%v_bounds(i))
+        end if
+    end function velocity_bound
 
     !> Every result and bound of a real64 run is finite.
     pure logical function finite(run, bounds)
@@ -244,6 +261,7 @@ contains
         run%limits%first = low%limits%first
         run%limits%last = low%limits%last
         run%limits%t = real(low%limits%t, qp)
+        run%limits%norm = real(low%limits%norm, qp)
         run%limits%at = low%limits%at
         run%order_n = low%order_n
         if (allocated(low%order_gaps)) run%order_gaps = low%order_gaps(:low%order_n)
