@@ -54,6 +54,7 @@ contains
         call scene_init(low, stat, msg, p=20, e=0.5_dp, gaps=spread(0.0_dp, 1, 19))
         low%closed_form_limits = scene%closed_form_limits
         low%vtol = real(scene%vtol, dp)
+        low%tol = real(scene%tol, dp)
         call simulate(low, direct)
         call check(error, direct%limits%bounded > 0 .and. direct%limits%norm > 0, &
             "the premise: a bounded limit in real(8), "//itoa(direct%limits%bounded))

@@ -19,6 +19,7 @@ contains
             new_unittest("bad_input_refused", test_bad_input), &
             new_unittest("bad_scene_keys_refused", test_bad_scene_keys), &
             new_unittest("spheres_table_runs", test_spheres_table), &
+            new_unittest("samples_zero_temperature_earned", test_samples_earned), &
             new_unittest("definition_scene_output", test_good_output), &
             new_unittest("print_lines_asked_for", test_print), &
             new_unittest("answer_says_what_it_rests_on", test_premises), &
@@ -210,6 +211,33 @@ contains
             .and. count_lines(samples) == 43, "spheres table: the samples' table: " &
             //samples(:min(200, len(samples))))
     end subroutine test_spheres_table
+
+    !> Four spheres moving together have a temperature of exactly 0 at every
+    !> sample, known to within the run's rounding bound: each row writes it as
+    !> 0 at that bound's decade (0E-67), not with every digit of real(16).
+    subroutine test_samples_earned(error)
+        type(error_t), allocatable, intent(out) :: error
+        character(len=*), parameter :: tsv = "build/test_samples_zero.tsv", &
+            zero = achar(9)//"0E-"
+        integer :: status, n, at, next
+        character(len=:), allocatable :: out, err, samples
+        call run_cli("p=4 e=0.1 velocities=1,1,1,1 t_max=10 samples="//tsv, status, out, err)
+        call check(error, status == 0 .and. len(err) == 0, "four together: exit status " &
+            //itoa_local(status)//": "//err)
+        if (allocated(error)) return
+        samples = read_text(tsv)
+        n = 0
+        at = 1
+        do
+            next = index(samples(at:), zero)
+            if (next == 0) exit
+            n = n + 1
+            at = at + next + len(zero) - 1
+        end do
+        call check(error, n == count_lines(samples) - 1 .and. n > 1, "four together: " &
+            //itoa_local(n)//" temperatures written as 0E-..., of " &
+            //itoa_local(count_lines(samples) - 1)//" rows: "//samples(:min(300, len(samples))))
+    end subroutine test_samples_earned
 
     !> `sphere-row e=0.2` prints the whole answer, one quantity per line.
     subroutine test_good_output(error)

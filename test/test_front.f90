@@ -10,6 +10,7 @@
 !> build/test_front/.
 module test_front
     use, intrinsic :: iso_fortran_env, only: int64
+    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_positive_inf
     use sphere_row, only: qp, scene_t, itoa
     use sphere_row_cli, only: cli_t, string_t
     use sphere_row_scene_keys, only: add_scene_keys, scene_from_cli, check_scene_in_dp
@@ -498,6 +499,9 @@ contains
         end do
         call check(error, earned_str(1.0_qp/3, 0.0_qp) == real_str(1.0_qp/3, &
             precision(1.0_qp) + 1), "an exact third: not every digit of real(16)")
+        call check(error, earned_str(ieee_value(1.0_qp, ieee_quiet_nan), 1.0e-3_qp) == "nan" &
+            .and. earned_str(-ieee_value(1.0_qp, ieee_positive_inf), 1.0e-3_qp) == "-inf", &
+            "a value that is not finite, within 1e-3: not nan, -inf")
         call check(error, earned_str(0.123_qp, 1.0e-30_qp, 1) == "1.2E-01", &
             "0.123 within 1e-30 at most 1 digit: "//earned_str(0.123_qp, 1.0e-30_qp, 1) &
             //", not 1.2E-01 (2 digits at the least)")

@@ -157,8 +157,9 @@ contains
     !> x written down to the decade of its bound and no further, as sphere-row
     !> writes a velocity: with `most` significant digits (default every digit
     !> of real(16); no fewer than 2) where the bound is 0 (x exact), or NaN or
-    !> infinite (no bound to go by); else with the digits from x's decade down
-    !> to the bound's, at most `most`. Where fewer than two digits are earned, x
+    !> infinite (no bound to go by), and as real_str where x is not finite
+    !> (nan, inf, -inf); else with the digits from x's decade down to the
+    !> bound's, at most `most`. Where fewer than two digits are earned, x
     !> rounded at the bound's decade as q 10^place: 0E-33 for 0 within
     !> 1e-33, 1E+00 for 0.96 within 0.1, 0E-01 for 0.003 within 0.1, 0E+4932
     !> within huge (the engine's bound where it has none).
@@ -182,7 +183,7 @@ contains
         integer :: digits, earned, place, q
         digits = precision(x) + 1
         if (present(most)) digits = max(2, most)
-        if (.not. (bound > 0 .and. bound <= huge(bound))) then
+        if (.not. (finite(x) .and. bound > 0 .and. bound <= huge(bound))) then
             call real_text(x, digits, text, length)
             return
         end if
